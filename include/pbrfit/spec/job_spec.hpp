@@ -1,0 +1,58 @@
+#pragma once
+// A job file: the common keys every kind shares, plus the validated section named after its kind.
+//
+//   name: dfg-quickstart          # required, [A-Za-z0-9._-]+
+//   kind: lut                     # required, one of the registered kinds
+//   seed: 1                       # default 0; random streams derive from (seed, work item)
+//   output: results/x.h5          # default results/<name>.h5
+//   checkpoint: {interval_seconds: 30, interval_items: 0}   # whichever comes first; 0 disables
+//   resources: {ranks: 2, time_limit: "01:00:00", partition: "", account: ""}
+//   lut: {...}                    # the kind's own section
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "pbrfit/spec/schema.hpp"
+
+namespace pbrfit::spec {
+
+struct CheckpointPolicy {
+  double interval_seconds = 30.0;    // 0: never by time
+  std::int64_t interval_items = 0;   // 0: never by count
+};
+
+struct Resources {
+  int ranks = 2;
+  std::string time_limit = "01:00:00";  // Slurm format [D-]HH:MM:SS or MM:SS
+  double time_limit_seconds = 3600.0;
+  std::string partition;
+  std::string account;
+};
+
+struct JobSpec {
+  std::string file;   // path as given
+  std::string text;   // the complete job text, byte for byte
+  std::string name;
+  std::string kind;
+  std::uint64_t seed = 0;
+  std::string output;
+  CheckpointPolicy checkpoint;
+  Resources resources;
+  Section kind_section;  // the validated section named after the kind
+};
+
+// The registered kinds, for validation: kind name -> schema of its section.
+struct KindCatalogue {
+  std::vector<std::string> names;
+  std::function<const Schema&(const std::string& kind)> schema_for;
+};
+
+// Parses and validates; throws InputError (FILE:LINE:COL) on any problem, including unreadable files.
+JobSpec load_job_file(const std::string& path, const KindCatalogue& kinds);
+JobSpec parse_job_text(const std::string& text, const std::string& file, const KindCatalogue& kinds);
+
+// The schema of the common keys (without the kind sections), for documentation and tests.
+const Schema& common_schema();
+
+}  // namespace pbrfit::spec

@@ -1,0 +1,106 @@
+#pragma once
+// Declarative schema for one YAML mapping of a job file: keys, types, ranges, choices, defaults, docs.
+// Validation is strict: unknown keys (with the closest valid key suggested), wrong types, out-of-range
+// numbers, bad choices, missing required keys and duplicate keys are InputErrors naming FILE:LINE:COL.
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "pbrfit/core/error.hpp"
+
+namespace pbrfit::spec {
+
+class Schema;
+class Section;
+
+enum class FieldType { boolean, integer, number, string, choice, integer_list, section };
+
+using Scalar = std::variant<bool, std::int64_t, double, std::string, std::vector<std::int64_t>>;
+
+struct Field {
+  std::string name;
+  FieldType type = FieldType::string;
+  std::string doc;
+  bool required = false;
+  std::optional<Scalar> default_value;
+  std::optional<double> min, max;            // inclusive bounds for integer, number and list elements
+  bool min_exclusive = false;
+  std::vector<std::string> choices;          // for FieldType::choice
+  std::size_t list_min = 0, list_max = 0;    // element counts for integer_list
+  std::shared_ptr<const Schema> nested;      // for FieldType::section
+
+  // Fluent setters; each returns *this.
+  Field& require();
+  Field& defaults_to(Scalar value);
+  Field& range(double lo, double hi);
+  Field& above(double lo);                   // lo exclusive, no upper bound
+  Field& at_least(double lo);                // lo inclusive, no upper bound
+};
+
+class Schema {
+ public:
+  explicit Schema(std::string name) : name_(std::move(name)) {}
+
+  Field& boolean(const std::string& name, const std::string& doc);
+  Field& integer(const std::string& name, const std::string& doc);
+  Field& number(const std::string& name, const std::string& doc);
+  Field& string(const std::string& name, const std::string& doc);
+  Field& choice(const std::string& name, std::vector<std::string> choices, const std::string& doc);
+  Field& integer_list(const std::string& name, std::size_t min_count, std::size_t max_count,
+                      const std::string& doc);
+  // A nested mapping; its defaults apply when the key is absent (unless the field is required).
+  Field& section(const std::string& name, Schema nested, const std::string& doc);
+
+  const std::string& name() const { return name_; }
+  const std::vector<Field>& fields() const { return fields_; }
+  const Field* find(const std::string& name) const;
+
+ private:
+  Field& add(Field field);
+  std::string name_;
+  std::vector<Field> fields_;
+};
+
+// A validated mapping: every schema key present (explicitly or by default) with its type checked.
+class Section {
+ public:
+  bool has(const std::string& key) const;  // present in the file or defaulted
+  bool given(const std::string& key) const;  // written in the file
+  bool get_bool(const std::string& key) const;
+  std::int64_t get_int(const std::string& key) const;
+  double get_number(const std::string& key) const;  // integers are accepted for numbers
+  const std::string& get_string(const std::string& key) const;  // also for choices
+  const std::vector<std::int64_t>& get_int_list(const std::string& key) const;
+  const Section& get_section(const std::string& key) const;
+
+  // Where the key's value is written; the section's own position when the key was defaulted.
+  SourcePosition position(const std::string& key) const;
+  const SourcePosition& position() const { return position_; }
+  // Throws InputError at position(key) with the message "'KEY' MESSAGE" (for cross-field checks).
+  [[noreturn]] void reject(const std::string& key, const std::string& message) const;
+
+  // Construction, for the validator.
+  struct Entry {
+    Scalar value;
+    SourcePosition where;
+    bool given = false;
+  };
+  explicit Section(SourcePosition where = {}) : position_(std::move(where)) {}
+  void set(const std::string& key, Entry entry);
+  void set_section(const std::string& key, Section section);
+
+ private:
+  const Entry& entry(const std::string& key) const;
+  SourcePosition position_;
+  std::map<std::string, Entry> entries_;
+  std::map<std::string, Section> sections_;
+};
+
+// The closest candidate by edit distance, or "" when none is plausibly meant.
+std::string closest_match(const std::string& word, const std::vector<std::string>& candidates);
+
+}  // namespace pbrfit::spec
