@@ -1,1 +1,3 @@
-int main() { return 0; }
+#include "pbrfit/cli/commands.hpp"
+
+int main(int argc, char** argv) { return pbrfit::cli::main_entry(argc, argv); }

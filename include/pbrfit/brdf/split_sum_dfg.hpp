@@ -13,12 +13,13 @@ namespace pbrfit::brdf {
 struct DfgEntry {
   double scale = 0.0;
   double bias = 0.0;
-  double error_estimate = 0.0;   // absolute, the larger of the two components
+  double error_estimate = 0.0;   // absolute; sum over tiles of the larger component error, bounds both
   std::size_t evaluations = 0;   // integrand evaluations spent
   bool converged = false;
 };
 
-// One table entry. n_dot_v in [0, 1], alpha >= 0 (alpha == 0 is the mirror limit, computed in closed form).
+// One table entry. n_dot_v in [0, 1], alpha >= 0 (alpha == 0 is the mirror limit, computed in closed form
+// with evaluations = 0); throws std::invalid_argument outside that domain.
 DfgEntry integrate_dfg(double n_dot_v, double alpha, SmithVisibility visibility,
                        const integrate::AdaptiveOptions& options);
 
@@ -29,7 +30,9 @@ struct AverageAlbedo {
   bool converged = false;
 };
 
-// Kulla-Conty average albedo of the single-scattering lobe (F = 1) for one alpha.
+// Kulla-Conty average albedo of the single-scattering lobe (F = 1) for one alpha: a 1-D adaptive integral
+// over mu whose samples are integrate_dfg calls at a tenth of the tolerance. error_estimate = outer estimate
+// + largest inner estimate; options.max_evaluations limits outer samples and each inner integral separately.
 AverageAlbedo integrate_average_albedo(double alpha, SmithVisibility visibility,
                                        const integrate::AdaptiveOptions& options);
 

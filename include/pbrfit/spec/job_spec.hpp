@@ -10,6 +10,7 @@
 //   lut: {...}                    # the kind's own section
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,7 +25,7 @@ struct CheckpointPolicy {
 
 struct Resources {
   int ranks = 2;
-  std::string time_limit = "01:00:00";  // Slurm format [D-]HH:MM:SS or MM:SS
+  std::string time_limit = "01:00:00";  // Slurm format: see parse_slurm_time_limit
   double time_limit_seconds = 3600.0;
   std::string partition;
   std::string account;
@@ -54,5 +55,10 @@ JobSpec parse_job_text(const std::string& text, const std::string& file, const K
 
 // The schema of the common keys (without the kind sections), for documentation and tests.
 const Schema& common_schema();
+
+// Seconds in a Slurm time limit: MM, MM:SS, HH:MM:SS, D-HH, D-HH:MM or D-HH:MM:SS. The leading field
+// (minutes, hours or days) has 1 to 9 digits, the others 1 or 2 digits, with minutes and seconds below
+// 60 after it and hours below 24 after days. nullopt when malformed; "0" gives 0 (job files reject it).
+std::optional<std::int64_t> parse_slurm_time_limit(const std::string& text);
 
 }  // namespace pbrfit::spec

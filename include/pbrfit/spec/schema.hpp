@@ -2,11 +2,15 @@
 // Declarative schema for one YAML mapping of a job file: keys, types, ranges, choices, defaults, docs.
 // Validation is strict: unknown keys (with the closest valid key suggested), wrong types, out-of-range
 // numbers, bad choices, missing required keys and duplicate keys are InputErrors naming FILE:LINE:COL.
+// A key written with an empty or null value (`key:`, `key: ~`, `key: null`) is a wrong-type error,
+// never "absent": only leaving the key out selects its default.
 #include <cstdint>
 #include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -35,6 +39,8 @@ struct Field {
 
   // Fluent setters; each returns *this.
   Field& require();
+  // The value's alternative must match the type (an integer is accepted for a number field, a
+  // choice's default must be one of its choices); anything else throws std::logic_error.
   Field& defaults_to(Scalar value);
   Field& range(double lo, double hi);
   Field& above(double lo);                   // lo exclusive, no upper bound
@@ -45,6 +51,8 @@ class Schema {
  public:
   explicit Schema(std::string name) : name_(std::move(name)) {}
 
+  // Each adder returns the new field for the fluent setters; the reference is valid until the next
+  // field is added. Adding a name twice throws std::logic_error.
   Field& boolean(const std::string& name, const std::string& doc);
   Field& integer(const std::string& name, const std::string& doc);
   Field& number(const std::string& name, const std::string& doc);
@@ -53,6 +61,7 @@ class Schema {
   Field& integer_list(const std::string& name, std::size_t min_count, std::size_t max_count,
                       const std::string& doc);
   // A nested mapping; its defaults apply when the key is absent (unless the field is required).
+  // An absent optional section whose schema has required keys cannot be defaulted: has() is false.
   Field& section(const std::string& name, Schema nested, const std::string& doc);
 
   const std::string& name() const { return name_; }
@@ -66,6 +75,8 @@ class Schema {
 };
 
 // A validated mapping: every schema key present (explicitly or by default) with its type checked.
+// Every accessor throws std::logic_error for a key the schema does not declare, and the getters also
+// for a key without a value (check has() first for optional keys without a default) or of another type.
 class Section {
  public:
   bool has(const std::string& key) const;  // present in the file or defaulted
@@ -89,18 +100,26 @@ class Section {
     SourcePosition where;
     bool given = false;
   };
-  explicit Section(SourcePosition where = {}) : position_(std::move(where)) {}
+  // set() and set_section() also declare the key; declare() alone adds a schema key without a value.
+  Section() = default;
+  explicit Section(SourcePosition where) : position_(std::move(where)) {}
+  void declare(const std::string& key);
   void set(const std::string& key, Entry entry);
-  void set_section(const std::string& key, Section section);
+  void set_section(const std::string& key, Section section, bool given = true);
 
  private:
   const Entry& entry(const std::string& key) const;
+  void require_declared(const std::string& key) const;
   SourcePosition position_;
+  std::set<std::string> declared_;        // every schema key, with or without a value
   std::map<std::string, Entry> entries_;
   std::map<std::string, Section> sections_;
+  std::set<std::string> given_sections_;  // the keys of sections_ written in the file
 };
 
-// The closest candidate by edit distance, or "" when none is plausibly meant.
+// The closest candidate by edit distance, or "" when none is plausibly meant: the Levenshtein distance
+// must be at most 2 or at most a third of the word's length, and smaller than the word's length.
+// Ties go to the earliest candidate.
 std::string closest_match(const std::string& word, const std::vector<std::string>& candidates);
 
 }  // namespace pbrfit::spec

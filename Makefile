@@ -1,0 +1,31 @@
+# The two commands of the README. Both install what is missing (Debian 12 packages), then build.
+BUILD ?= build
+MPIRUN ?= mpirun
+# Root needs OpenMPI's explicit consent; --oversubscribe lets 2 ranks run on a 1-core machine.
+MPIRUN_FLAGS ?= $(if $(filter 0,$(shell id -u)),--allow-run-as-root,) --oversubscribe
+
+.PHONY: demo test build deps bench clean
+
+demo: build
+	$(MPIRUN) $(MPIRUN_FLAGS) -np 2 $(BUILD)/pbrfit run jobs/quickstart.yaml
+	@echo
+	@$(BUILD)/pbrfit status results/quickstart.h5
+	@echo
+	@echo "The table is in results/quickstart.h5 (group /dfg; layout in docs/results-lut.md)."
+	@echo "Look inside:  h5ls -r results/quickstart.h5   or   h5dump -d /dfg/scale results/quickstart.h5"
+
+test: build
+	cd $(BUILD) && ctest --output-on-failure
+
+bench: build
+	tests/benchmarks/dfg_lut.sh $(BUILD)/pbrfit
+
+build: deps
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release
+	cmake --build $(BUILD) -j 2
+
+deps:
+	.ci/install-deps
+
+clean:
+	rm -rf $(BUILD)

@@ -1,0 +1,24 @@
+#pragma once
+// The pbrfit command line: run, validate, status. Each returns the process exit code (core/error.hpp)
+// and never lets an exception escape.
+#include <string>
+
+#include "pbrfit/runtime/logging.hpp"
+
+namespace pbrfit::cli {
+
+struct RunOptions {
+  std::string job_file;
+  std::string output;  // overrides the job's output when set
+  bool resume = false;
+  bool force = false;
+  runtime::Verbosity verbosity = runtime::Verbosity::normal;
+};
+
+int run_command(const RunOptions& options);
+int validate_command(const std::string& job_file);
+int status_command(const std::string& result_file);
+
+int main_entry(int argc, char** argv);
+
+}  // namespace pbrfit::cli

@@ -1,0 +1,53 @@
+#pragma once
+// The split-sum DFG table as a workload: one work item per roughness row, each integrating every
+// n.v entry of the row (and, with multiple scattering, the row's Kulla-Conty average albedo).
+#include <cstddef>
+#include <vector>
+
+#include "pbrfit/brdf/ggx.hpp"
+#include "pbrfit/brdf/roughness.hpp"
+#include "pbrfit/integrate/adaptive_cubature.hpp"
+#include "pbrfit/jobs/lut/table_axis.hpp"
+#include "pbrfit/runtime/workload.hpp"
+
+namespace pbrfit::jobs::lut {
+
+struct DfgSettings {
+  brdf::SmithVisibility visibility = brdf::SmithVisibility::height_correlated;
+  brdf::RoughnessParametrization roughness = brdf::RoughnessParametrization::perceptual;
+  bool multiple_scattering = false;
+  std::size_t n_dot_v_count = 128;
+  std::size_t roughness_count = 128;
+  Placement placement = Placement::centres;
+  integrate::AdaptiveOptions integration;  // per entry
+};
+
+class DfgTable final : public runtime::Workload {
+ public:
+  explicit DfgTable(const DfgSettings& settings);
+
+  store::ResultLayout layout() const override;
+  std::uint64_t item_count(std::uint32_t) const override { return roughness_.size(); }
+  Bytes compute(std::uint32_t stage, std::uint64_t item, const Bytes& context) const override;
+  std::vector<store::Block> blocks(WorkItemId id, const Bytes& result) const override;
+  std::string headline(const ItemResults& finished) const override;
+
+ private:
+  // A row's result, as computed and as stored in checkpoints.
+  struct Row {
+    std::vector<double> scale, bias, error_estimate, evaluations;
+    double average_energy = 0.0;
+    double average_energy_error = 0.0;
+  };
+  Bytes encode(const Row& row) const;
+  Row decode(const Bytes& bytes) const;
+  double alpha(std::uint64_t row) const;
+  // Throws RunError (naming the entry and what to change) when an integral missed the tolerance.
+  void require_converged(bool converged, double error, std::size_t evaluations, const std::string& what) const;
+
+  DfgSettings settings_;
+  std::vector<double> n_dot_v_;
+  std::vector<double> roughness_;
+};
+
+}  // namespace pbrfit::jobs::lut

@@ -1,0 +1,29 @@
+#pragma once
+// The MPI environment of one process: initialized once (MPI_THREAD_FUNNELED: only the main thread
+// calls MPI; rank 0 computes on a second thread), finalized on destruction.
+namespace pbrfit::runtime {
+
+class MpiSession {
+ public:
+  MpiSession();
+  ~MpiSession();
+  MpiSession(const MpiSession&) = delete;
+  MpiSession& operator=(const MpiSession&) = delete;
+
+  int rank() const { return rank_; }
+  int size() const { return size_; }
+  bool coordinator() const { return rank_ == 0; }
+
+  // Every rank returns rank 0's value.
+  int broadcast_from_coordinator(int value) const;
+
+ private:
+  int rank_ = 0;
+  int size_ = 1;
+};
+
+// The rank this process will have, read from the launcher's environment before MPI starts
+// (OpenMPI, PMIx, Slurm); 0 when launched alone. Lets only one rank report input errors.
+int launcher_rank();
+
+}  // namespace pbrfit::runtime

@@ -1,0 +1,70 @@
+#pragma once
+// The HDF5 result file of one job, owned by rank 0. Results stream in as blocks and are written at
+// each flush by opening the file, appending and closing it again: between flushes the file on disk is
+// complete and consistent, so h5dump, h5py and `pbrfit status` can read it while the job runs.
+//
+// Root attributes: pbrfit_version, job_name, job_kind, job_yaml, seed, ranks, state
+// (running | complete | interrupted | failed), started_utc, finished_utc, items_done, items_total,
+// elapsed_seconds, headline, updated_utc, writer_host, writer_pid.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "pbrfit/store/result_layout.hpp"
+
+namespace pbrfit::store {
+
+struct RunInfo {
+  std::string job_name;
+  std::string job_kind;
+  std::string job_yaml;
+  std::uint64_t seed = 0;
+  int ranks = 1;
+  std::string started_utc;
+};
+
+struct Progress {
+  std::string state = "running";
+  std::uint64_t items_done = 0;
+  std::uint64_t items_total = 0;
+  double elapsed_seconds = 0.0;
+  std::string headline;
+  std::string finished_utc;  // empty while running
+};
+
+class ResultFile {
+ public:
+  // Creates (truncating) the file with every group, axis and (empty, extendible) table of the layout.
+  ResultFile(std::string path, ResultLayout layout, const RunInfo& info);
+
+  // Queues blocks; nothing touches the disk until flush().
+  void add(std::vector<Block> blocks);
+  // Writes queued blocks and the progress attributes; throws RunError on I/O failure (queued blocks
+  // are kept for the next attempt).
+  void flush(const Progress& progress);
+
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+  ResultLayout layout_;
+  std::vector<Block> pending_;
+};
+
+// What `status` and the overwrite check read back; throws InputError if the file is not a pbrfit result.
+struct ResultSummary {
+  std::string pbrfit_version, job_name, job_kind, job_yaml, state, started_utc, finished_utc;
+  std::string headline, updated_utc, writer_host;
+  std::uint64_t seed = 0, items_done = 0, items_total = 0;
+  std::int64_t ranks = 0, writer_pid = 0;
+  double elapsed_seconds = 0.0;
+};
+ResultSummary read_result_summary(const std::string& path);
+
+// Reads one whole table as a flat row-major array with its dimensions (for tests and reports).
+std::vector<double> read_table(const std::string& path, const std::string& dataset,
+                               std::vector<std::uint64_t>* dims = nullptr);
+
+std::string utc_now_iso8601();
+
+}  // namespace pbrfit::store

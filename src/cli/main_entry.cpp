@@ -1,0 +1,48 @@
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+
+#include "pbrfit/cli/commands.hpp"
+#include "pbrfit/core/error.hpp"
+#include "pbrfit/core/version.hpp"
+
+namespace pbrfit::cli {
+
+int main_entry(int argc, char** argv) {
+  CLI::App app{"pbrfit: fits approximate models for physically based rendering, as MPI batch jobs"};
+  app.set_version_flag("--version", version);
+  app.require_subcommand(1);
+
+  RunOptions run;
+  bool quiet = false, verbose = false;
+  auto* run_cmd = app.add_subcommand("run", "run a job on the ranks mpirun gives (one included)");
+  run_cmd->add_option("job", run.job_file, "job file (YAML)")->required();
+  run_cmd->add_option("-o,--output", run.output, "result file, instead of the job's output");
+  run_cmd->add_flag("--resume", run.resume, "continue from the job's checkpoint, if there is one");
+  run_cmd->add_flag("--force", run.force, "overwrite a result or checkpoint of a different job text");
+  auto* quiet_flag = run_cmd->add_flag("-q,--quiet", quiet, "log warnings and errors only");
+  run_cmd->add_flag("-v,--verbose", verbose, "log details, from every rank")->excludes(quiet_flag);
+
+  std::string validate_file;
+  auto* validate_cmd = app.add_subcommand("validate", "check a job file without running it");
+  validate_cmd->add_option("job", validate_file, "job file (YAML)")->required();
+
+  std::string status_file;
+  auto* status_cmd = app.add_subcommand("status", "state and progress of a result file, also while it runs");
+  status_cmd->add_option("result", status_file, "result file (HDF5)")->required();
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::Success& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    app.exit(e);
+    return exit_invalid_input;
+  }
+  run.verbosity = quiet ? runtime::Verbosity::quiet : verbose ? runtime::Verbosity::verbose : runtime::Verbosity::normal;
+  if (*run_cmd) return run_command(run);
+  if (*validate_cmd) return validate_command(validate_file);
+  return status_command(status_file);
+}
+
+}  // namespace pbrfit::cli

@@ -1,0 +1,57 @@
+#include <spdlog/spdlog.h>
+
+#include <cstdio>
+
+#include "pbrfit/cli/commands.hpp"
+#include "pbrfit/core/error.hpp"
+#include "pbrfit/jobs/job_kinds.hpp"
+#include "pbrfit/runtime/job_runner.hpp"
+#include "pbrfit/runtime/mpi_session.hpp"
+
+namespace pbrfit::cli {
+
+namespace {
+
+runtime::RunSettings settings_for(const spec::JobSpec& job, const RunOptions& options) {
+  runtime::RunSettings s;
+  s.job_text = job.text;
+  s.job_name = job.name;
+  s.job_kind = job.kind;
+  s.seed = job.seed;
+  s.output = options.output.empty() ? job.output : options.output;
+  s.checkpoint_interval_seconds = job.checkpoint.interval_seconds;
+  s.checkpoint_interval_items = job.checkpoint.interval_items;
+  s.resume = options.resume;
+  s.force = options.force;
+  return s;
+}
+
+int run_validated(const spec::JobSpec& job, const runtime::Workload& workload, const RunOptions& options) {
+  runtime::MpiSession mpi;
+  runtime::setup_logging(mpi.rank(), options.verbosity);
+  const auto settings = settings_for(job, options);
+  if (mpi.coordinator())
+    spdlog::info("job '{}' ({}) on {} rank{}: {} work items -> {}", job.name, job.kind, mpi.size(),
+                 mpi.size() == 1 ? "" : "s", workload.total_items(), settings.output);
+  return runtime::run_workload(mpi, workload, settings);
+}
+
+}  // namespace
+
+int run_command(const RunOptions& options) {
+  // Every rank validates the same file; only the one that will be rank 0 reports a rejection.
+  const bool reporter = runtime::launcher_rank() == 0;
+  try {
+    const auto job = spec::load_job_file(options.job_file, jobs::kind_catalogue());
+    const auto workload = jobs::make_workload(job);
+    return run_validated(job, *workload, options);
+  } catch (const InputError& e) {
+    if (reporter) std::fprintf(stderr, "%s\n", e.what());
+    return exit_invalid_input;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "pbrfit: error: %s\n", e.what());
+    return exit_run_failure;
+  }
+}
+
+}  // namespace pbrfit::cli

@@ -1,0 +1,71 @@
+#include "pbrfit/jobs/lut/lut_kind.hpp"
+
+#include "pbrfit/jobs/lut/dfg_table.hpp"
+
+namespace pbrfit::jobs::lut {
+
+namespace {
+
+spec::Schema lut_schema() {
+  spec::Schema s("lut");
+  s.choice("function", {"dfg"}, "the table to compute: dfg = split-sum environment BRDF of GGX").require();
+  s.choice("visibility", {"height_correlated", "separable", "separable_schlick"},
+           "Smith masking-shadowing: height_correlated (Filament), separable (exact Smith G1 G1), "
+           "separable_schlick (UE4 / Karis, k = alpha / 2)")
+      .defaults_to(std::string("height_correlated"));
+  s.boolean("multiple_scattering", "also tabulate E(n.v) and the Kulla-Conty average albedo per roughness")
+      .defaults_to(false);
+  s.choice("roughness", {"perceptual", "linear", "gloss"},
+           "roughness axis: perceptual (alpha = r^2), linear (alpha = r), gloss (alpha = (1 - g)^4, Narkowicz)")
+      .defaults_to(std::string("perceptual"));
+  s.integer_list("resolution", 2, 2, "entries along [n_dot_v, roughness]")
+      .range(1, 8192)
+      .defaults_to(std::vector<std::int64_t>{128, 128});
+  s.choice("samples", {"centres", "edges"}, "axis samples at cell centres (i + 0.5) / n or edges i / (n - 1)")
+      .defaults_to(std::string("centres"));
+  s.number("tolerance", "absolute error allowed per entry").range(1e-12, 1e-2).defaults_to(1e-6);
+  s.integer("max_evaluations", "integrand evaluations allowed per entry before giving up on the tolerance")
+      .range(1000, 1'000'000'000)
+      .defaults_to(std::int64_t{20'000'000});
+  return s;
+}
+
+brdf::SmithVisibility visibility_from(const std::string& name) {
+  if (name == "separable") return brdf::SmithVisibility::separable;
+  if (name == "separable_schlick") return brdf::SmithVisibility::separable_schlick;
+  return brdf::SmithVisibility::height_correlated;
+}
+
+brdf::RoughnessParametrization roughness_from(const std::string& name) {
+  if (name == "linear") return brdf::RoughnessParametrization::linear;
+  if (name == "gloss") return brdf::RoughnessParametrization::gloss;
+  return brdf::RoughnessParametrization::perceptual;
+}
+
+DfgSettings dfg_settings(const spec::Section& lut) {
+  DfgSettings s;
+  s.visibility = visibility_from(lut.get_string("visibility"));
+  s.roughness = roughness_from(lut.get_string("roughness"));
+  s.multiple_scattering = lut.get_bool("multiple_scattering");
+  const auto& resolution = lut.get_int_list("resolution");
+  s.n_dot_v_count = std::size_t(resolution[0]);
+  s.roughness_count = std::size_t(resolution[1]);
+  s.placement = placement_from(lut.get_string("samples"));
+  if (s.placement == Placement::edges && (s.n_dot_v_count < 2 || s.roughness_count < 2))
+    lut.reject("resolution", "needs at least 2 entries per axis when samples is 'edges'");
+  s.integration.abs_tolerance = lut.get_number("tolerance");
+  s.integration.max_evaluations = std::size_t(lut.get_int("max_evaluations"));
+  return s;
+}
+
+std::unique_ptr<runtime::Workload> make_lut(const spec::JobSpec& job) {
+  return std::make_unique<DfgTable>(dfg_settings(job.kind_section));
+}
+
+}  // namespace
+
+JobKind lut_kind() {
+  return {"lut", "reference tables by deterministic adaptive integration (function: dfg)", lut_schema(), make_lut};
+}
+
+}  // namespace pbrfit::jobs::lut

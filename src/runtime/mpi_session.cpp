@@ -1,0 +1,35 @@
+#include "pbrfit/runtime/mpi_session.hpp"
+
+#include <mpi.h>
+
+#include <cstdlib>
+#include <string>
+
+#include "pbrfit/core/error.hpp"
+
+namespace pbrfit::runtime {
+
+MpiSession::MpiSession() {
+  int provided = 0;
+  if (MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided) != MPI_SUCCESS)
+    throw RunError("MPI initialization failed");
+  if (provided < MPI_THREAD_FUNNELED) throw RunError("the MPI library lacks MPI_THREAD_FUNNELED support");
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
+  MPI_Comm_size(MPI_COMM_WORLD, &size_);
+}
+
+MpiSession::~MpiSession() { MPI_Finalize(); }
+
+int MpiSession::broadcast_from_coordinator(int value) const {
+  MPI_Bcast(&value, 1, MPI_INT, 0, MPI_COMM_WORLD);
+  return value;
+}
+
+int launcher_rank() {
+  for (const char* name : {"OMPI_COMM_WORLD_RANK", "PMIX_RANK", "PMI_RANK", "SLURM_PROCID"}) {
+    if (const char* value = std::getenv(name)) return std::atoi(value);
+  }
+  return 0;
+}
+
+}  // namespace pbrfit::runtime

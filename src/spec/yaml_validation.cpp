@@ -1,0 +1,223 @@
+#include "yaml_validation.hpp"
+
+#include <optional>
+#include <set>
+#include <vector>
+
+#include "message_text.hpp"
+#include "scalar_syntax.hpp"
+
+namespace pbrfit::spec {
+namespace {
+
+std::string child_path(const std::string& path, const std::string& key) {
+  return path.empty() ? key : path + "." + key;
+}
+
+// "'KEY' must be REQUIREMENT, got WHAT" at where.
+[[noreturn]] void reject_value(const SourcePosition& where, const std::string& subject,
+                               const std::string& requirement, const std::string& what) {
+  throw InputError(where, subject + " must be " + requirement + ", got " + what);
+}
+
+[[noreturn]] void reject_wrong_type(const Field& field, const YAML::Node& key, const YAML::Node& value,
+                                    const YamlSource& source) {
+  reject_value(source.value_position(key, value), quoted(field.name), type_requirement(field),
+               source.describe(value));
+}
+
+void check_range(const Field& field, const std::string& subject, double value, const std::string& written,
+                 const SourcePosition& where) {
+  if (!in_range(field, value)) reject_value(where, subject, range_requirement(field), written);
+}
+
+// An integer written at value; subject names it in messages ("'seed'", "'resolution' item 2").
+std::int64_t checked_integer(const Field& field, const std::string& subject, const YAML::Node& value,
+                             const SourcePosition& where, const YamlSource& source) {
+  const std::optional<std::int64_t> integer =
+      value.IsScalar() ? parse_integer(value.Scalar()) : std::nullopt;
+  if (!integer) {
+    const bool too_long = value.IsScalar() && has_integer_syntax(value.Scalar());
+    reject_value(where, subject, too_long ? "an integer that fits in 64 bits" : "an integer",
+                 too_long ? value.Scalar() : source.describe(value));
+  }
+  check_range(field, subject, static_cast<double>(*integer), value.Scalar(), where);
+  return *integer;
+}
+
+double checked_number(const Field& field, const YAML::Node& key, const YAML::Node& value,
+                      const YamlSource& source) {
+  const std::optional<double> number = value.IsScalar() ? parse_number(value.Scalar()) : std::nullopt;
+  if (!number) reject_wrong_type(field, key, value, source);
+  check_range(field, quoted(field.name), *number, value.Scalar(), source.position(value.Mark()));
+  return *number;
+}
+
+bool checked_boolean(const Field& field, const YAML::Node& key, const YAML::Node& value,
+                     const YamlSource& source) {
+  bool flag = false;
+  if (!value.IsScalar() || !YAML::convert<bool>::decode(value, flag)) {
+    reject_wrong_type(field, key, value, source);
+  }
+  return flag;
+}
+
+std::string checked_string(const Field& field, const YAML::Node& key, const YAML::Node& value,
+                           const YamlSource& source) {
+  if (!value.IsScalar()) reject_wrong_type(field, key, value, source);
+  return value.Scalar();
+}
+
+std::string checked_choice(const Field& field, const YAML::Node& key, const YAML::Node& value,
+                           const YamlSource& source) {
+  if (value.IsScalar()) {
+    for (const std::string& choice : field.choices) {
+      if (value.Scalar() == choice) return choice;
+    }
+  }
+  const std::string hint = value.IsScalar() ? suggestion(value.Scalar(), field.choices) : "";
+  throw InputError(source.value_position(key, value), quoted(field.name) + " must be " +
+                                                          type_requirement(field) + "; got " +
+                                                          source.describe(value) + hint);
+}
+
+std::string count_of_items(std::size_t count) {
+  if (count == 0) return "an empty list";
+  return "a list of " + std::to_string(count) + (count == 1 ? " item" : " items");
+}
+
+std::vector<std::int64_t> checked_integer_list(const Field& field, const YAML::Node& key,
+                                               const YAML::Node& value, const YamlSource& source) {
+  if (!value.IsSequence()) reject_wrong_type(field, key, value, source);
+  if (value.size() < field.list_min || value.size() > field.list_max) {
+    reject_value(source.position(value.Mark()), quoted(field.name), type_requirement(field),
+                 count_of_items(value.size()));
+  }
+  std::vector<std::int64_t> integers;
+  for (std::size_t i = 0; i < value.size(); ++i) {
+    const YAML::Node item = value[i];
+    const std::string subject = quoted(field.name) + " item " + std::to_string(i + 1);
+    integers.push_back(checked_integer(field, subject, item, source.position(item.Mark()), source));
+  }
+  return integers;
+}
+
+Scalar checked_scalar(const Field& field, const YAML::Node& key, const YAML::Node& value,
+                      const YamlSource& source) {
+  switch (field.type) {
+    case FieldType::boolean: return checked_boolean(field, key, value, source);
+    case FieldType::integer:
+      return checked_integer(field, quoted(field.name), value, source.value_position(key, value), source);
+    case FieldType::number: return checked_number(field, key, value, source);
+    case FieldType::string: return checked_string(field, key, value, source);
+    case FieldType::choice: return checked_choice(field, key, value, source);
+    case FieldType::integer_list: return checked_integer_list(field, key, value, source);
+    case FieldType::section: break;
+  }
+  throw std::logic_error("pbrfit::spec: section field '" + field.name + "' validated as a value");
+}
+
+[[noreturn]] void reject_unknown_key(const std::string& key, const YAML::Node& key_node, const Schema& schema,
+                                     const std::string& path, const YamlSource& source) {
+  std::vector<std::string> valid_keys;
+  for (const Field& field : schema.fields()) valid_keys.push_back(field.name);
+  std::string hint = suggestion(key, valid_keys);
+  if (hint.empty()) hint = "; valid keys: " + join(valid_keys);
+  throw InputError(source.position(key_node.Mark()),
+                   "unknown key " + quoted(key) + " in " + quoted(display_path(path)) + hint);
+}
+
+// The section an absent key stands for: all defaults, or nullopt when a required key has none.
+std::optional<Section> defaulted_section(const Schema& schema, const SourcePosition& where) {
+  Section section(where);
+  for (const Field& field : schema.fields()) {
+    section.declare(field.name);
+    if (field.required) return std::nullopt;
+    if (field.type == FieldType::section) {
+      if (auto nested = defaulted_section(*field.nested, where)) {
+        section.set_section(field.name, std::move(*nested), false);
+      }
+    } else if (field.default_value) {
+      section.set(field.name, Section::Entry{*field.default_value, where, false});
+    }
+  }
+  return section;
+}
+
+void fill_absent_field(Section& section, const Field& field, const std::string& path) {
+  if (field.required) {
+    throw InputError(section.position(), "missing required key " + quoted(field.name) + " in " +
+                                             quoted(display_path(path)));
+  }
+  if (field.type == FieldType::section) {
+    if (auto nested = defaulted_section(*field.nested, section.position())) {
+      section.set_section(field.name, std::move(*nested), false);
+    }
+  } else if (field.default_value) {
+    section.set(field.name, Section::Entry{*field.default_value, section.position(), false});
+  }
+}
+
+Section validated_section(const Field& field, const YAML::Node& key, const YAML::Node& value,
+                          const std::string& path, const YamlSource& source) {
+  if (!value.IsMap()) reject_wrong_type(field, key, value, source);
+  return validate_mapping(value, *field.nested, child_path(path, field.name), source);
+}
+
+}  // namespace
+
+std::string display_path(const std::string& path) { return path.empty() ? "job" : path; }
+
+std::string key_name(const YAML::Node& key, const std::string& path, const YamlSource& source) {
+  if (!key.IsScalar()) {
+    throw InputError(source.position(key.Mark()), "a key in " + quoted(display_path(path)) +
+                                                      " must be a name, got " + source.describe(key));
+  }
+  return key.Scalar();
+}
+
+void reject_duplicate_keys(const YAML::Node& node, const std::string& path, const YamlSource& source) {
+  if (node.IsSequence()) {
+    for (std::size_t i = 0; i < node.size(); ++i) {
+      reject_duplicate_keys(node[i], path + "[" + std::to_string(i) + "]", source);
+    }
+  }
+  if (!node.IsMap()) return;
+  std::set<std::string> seen;
+  for (const auto& pair : node) {
+    if (!pair.first.IsScalar()) continue;  // reported by validate_mapping
+    const std::string& key = pair.first.Scalar();
+    if (!seen.insert(key).second) {
+      throw InputError(source.position(pair.first.Mark()),
+                       "duplicate key " + quoted(key) + " in " + quoted(display_path(path)));
+    }
+    reject_duplicate_keys(pair.second, child_path(path, key), source);
+  }
+}
+
+Section::Entry validate_value(const Field& field, const YAML::Node& key, const YAML::Node& value,
+                              const YamlSource& source) {
+  return Section::Entry{checked_scalar(field, key, value, source), source.position(value.Mark()), true};
+}
+
+Section validate_mapping(const YAML::Node& mapping, const Schema& schema, const std::string& path,
+                         const YamlSource& source) {
+  Section section(source.position(mapping.Mark()));
+  for (const Field& field : schema.fields()) section.declare(field.name);
+  for (const auto& pair : mapping) {
+    const std::string key = key_name(pair.first, path, source);
+    const Field* field = schema.find(key);
+    if (!field) reject_unknown_key(key, pair.first, schema, path, source);
+    if (field->type == FieldType::section) {
+      section.set_section(key, validated_section(*field, pair.first, pair.second, path, source));
+    } else {
+      section.set(key, validate_value(*field, pair.first, pair.second, source));
+    }
+  }
+  for (const Field& field : schema.fields()) {
+    if (!section.given(field.name)) fill_absent_field(section, field, path);
+  }
+  return section;
+}
+
+}  // namespace pbrfit::spec

@@ -1,0 +1,126 @@
+#include "hdf5_handle.hpp"
+
+#include "pbrfit/core/error.hpp"
+
+namespace pbrfit::store::h5 {
+
+Handle& Handle::operator=(Handle&& other) noexcept {
+  if (this != &other) {
+    reset();
+    id_ = other.id_;
+    closer_ = other.closer_;
+    other.id_ = H5I_INVALID_HID;
+  }
+  return *this;
+}
+
+void Handle::reset() {
+  if (id_ >= 0 && closer_) closer_(id_);
+  id_ = H5I_INVALID_HID;
+}
+
+hid_t check(hid_t id, const std::string& what) {
+  if (id < 0) throw RunError("HDF5: cannot " + what);
+  return id;
+}
+
+void check(herr_t status, const std::string& what) {
+  if (status < 0) throw RunError("HDF5: cannot " + what);
+}
+
+void silence_error_stack() { H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); }
+
+Handle file_access() {
+  Handle fapl(check(H5Pcreate(H5P_FILE_ACCESS), "create file access list"), H5Pclose);
+  check(H5Pset_file_locking(fapl, false, true), "disable file locking");
+  return fapl;
+}
+
+Handle open_file(const std::string& path, bool writable) {
+  silence_error_stack();
+  Handle fapl = file_access();
+  hid_t id = H5Fopen(path.c_str(), writable ? H5F_ACC_RDWR : H5F_ACC_RDONLY, fapl);
+  check(id, "open " + path);
+  return Handle(id, H5Fclose);
+}
+
+namespace {
+
+Handle scalar_space() { return Handle(check(H5Screate(H5S_SCALAR), "create dataspace"), H5Sclose); }
+
+Handle string_type() {
+  Handle type(check(H5Tcopy(H5T_C_S1), "copy string type"), H5Tclose);
+  check(H5Tset_size(type, H5T_VARIABLE), "set string size");
+  check(H5Tset_cset(type, H5T_CSET_UTF8), "set string charset");
+  return type;
+}
+
+template <class T>
+void write_scalar_attribute(hid_t object, const std::string& name, hid_t file_type, hid_t mem_type,
+                            const T& value) {
+  if (H5Aexists(object, name.c_str()) > 0) check(H5Adelete(object, name.c_str()), "replace attribute " + name);
+  Handle space = scalar_space();
+  Handle attr(check(H5Acreate2(object, name.c_str(), file_type, space, H5P_DEFAULT, H5P_DEFAULT),
+                    "create attribute " + name),
+              H5Aclose);
+  check(H5Awrite(attr, mem_type, &value), "write attribute " + name);
+}
+
+Handle open_attribute(hid_t object, const std::string& name) {
+  return Handle(check(H5Aopen(object, name.c_str(), H5P_DEFAULT), "read attribute " + name), H5Aclose);
+}
+
+}  // namespace
+
+void write_string_attribute(hid_t object, const std::string& name, const std::string& value) {
+  Handle type = string_type();
+  const char* text = value.c_str();
+  write_scalar_attribute(object, name, type, type, text);
+}
+
+void write_u64_attribute(hid_t object, const std::string& name, std::uint64_t value) {
+  write_scalar_attribute(object, name, H5T_STD_U64LE, H5T_NATIVE_UINT64, value);
+}
+
+void write_i64_attribute(hid_t object, const std::string& name, std::int64_t value) {
+  write_scalar_attribute(object, name, H5T_STD_I64LE, H5T_NATIVE_INT64, value);
+}
+
+void write_f64_attribute(hid_t object, const std::string& name, double value) {
+  write_scalar_attribute(object, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, value);
+}
+
+bool has_attribute(hid_t object, const std::string& name) { return H5Aexists(object, name.c_str()) > 0; }
+
+std::string read_string_attribute(hid_t object, const std::string& name) {
+  Handle attr = open_attribute(object, name);
+  Handle type(check(H5Aget_type(attr), "read type of " + name), H5Tclose);
+  if (H5Tget_class(type) != H5T_STRING) throw RunError("HDF5: attribute " + name + " is not a string");
+  if (H5Tis_variable_str(type) > 0) {
+    Handle mem = string_type();
+    char* text = nullptr;
+    check(H5Aread(attr, mem, &text), "read attribute " + name);
+    std::string value = text ? text : "";
+    H5free_memory(text);
+    return value;
+  }
+  std::vector<char> buffer(H5Tget_size(type) + 1, '\0');
+  check(H5Aread(attr, type, buffer.data()), "read attribute " + name);
+  return std::string(buffer.data());
+}
+
+std::int64_t read_i64_attribute(hid_t object, const std::string& name) {
+  Handle attr = open_attribute(object, name);
+  std::int64_t value = 0;
+  check(H5Aread(attr, H5T_NATIVE_INT64, &value), "read attribute " + name);
+  return value;
+}
+
+double read_f64_attribute(hid_t object, const std::string& name) {
+  Handle attr = open_attribute(object, name);
+  double value = 0;
+  check(H5Aread(attr, H5T_NATIVE_DOUBLE, &value), "read attribute " + name);
+  return value;
+}
+
+}  // namespace pbrfit::store::h5

@@ -1,0 +1,99 @@
+# Shared helpers of the end-to-end tests. Each test runs in its own temporary directory.
+# Environment (set by ctest): PBRFIT (the binary), PBRFIT_SOURCE_DIR, MPIEXEC.
+set -euo pipefail
+
+: "${PBRFIT:?PBRFIT must name the pbrfit binary}"
+: "${PBRFIT_SOURCE_DIR:?}"
+MPIEXEC=${MPIEXEC:-mpirun}
+MPI_FLAGS=(--oversubscribe)
+[[ $(id -u) -eq 0 ]] && MPI_FLAGS+=(--allow-run-as-root)
+H5PY_PYTHON=/usr/bin/python3   # Debian's h5py is installed for the system interpreter
+
+WORK=$(mktemp -d "${TMPDIR:-/tmp}/pbrfit-test.XXXXXX")
+trap 'kill_group_if_running; rm -rf "$WORK"' EXIT
+cd "$WORK"
+
+BACKGROUND_PID=""
+
+fail() { echo "FAIL: $*" >&2; exit 1; }
+note() { echo "--- $*"; }
+
+# mpirun with N ranks in the foreground; prints the command's exit code as $STATUS.
+run_ranks() {
+  local ranks=$1; shift
+  set +e
+  "$MPIEXEC" "${MPI_FLAGS[@]}" -np "$ranks" "$PBRFIT" "$@"
+  STATUS=$?
+  set -e
+}
+
+# mpirun with N ranks in the background, in its own session (so it can be killed as a whole: OpenMPI
+# gives each rank a process group of its own, but they stay in mpirun's session).
+start_ranks() {
+  local ranks=$1; shift
+  setsid "$MPIEXEC" "${MPI_FLAGS[@]}" -np "$ranks" "$PBRFIT" "$@" &
+  BACKGROUND_PID=$!
+}
+
+wait_background() {
+  set +e
+  wait "$BACKGROUND_PID"
+  STATUS=$?
+  set -e
+  BACKGROUND_PID=""
+}
+
+kill_group_if_running() {
+  if [[ -n "$BACKGROUND_PID" ]] && kill -0 "$BACKGROUND_PID" 2>/dev/null; then
+    kill_session KILL
+    wait "$BACKGROUND_PID" 2>/dev/null || true
+  fi
+}
+
+# The pbrfit processes (ranks) of the background job.
+rank_pids() { pgrep -s "$BACKGROUND_PID" -x pbrfit || true; }
+
+# Sends a signal to mpirun and every rank at once.
+kill_session() { pkill "-$1" -s "$BACKGROUND_PID" 2>/dev/null || true; }
+
+# Waits until the result file reports at least N finished items (while the job runs).
+wait_for_items() {
+  local file=$1 wanted=$2 deadline=$((SECONDS + 120)) done
+  while (( SECONDS < deadline )); do
+    done=$("$PBRFIT" status "$file" 2>/dev/null | sed -n 's/^progress: *\([0-9]*\) of.*/\1/p' || true)
+    if [[ -n "$done" ]] && (( done >= wanted )); then return 0; fi
+    kill -0 "$BACKGROUND_PID" 2>/dev/null || fail "the job ended before $wanted items were done"
+    sleep 0.1
+  done
+  fail "timed out waiting for $wanted items in $file"
+}
+
+# Waits (briefly) until `pbrfit status` shows a state line matching the pattern; a killed process can
+# take a moment to disappear.
+wait_for_state() {
+  local file=$1 pattern=$2 i
+  for i in $(seq 1 30); do
+    "$PBRFIT" status "$file" > status.txt 2>&1 && grep -q "^state: *$pattern" status.txt && return 0
+    sleep 0.1
+  done
+  cat status.txt
+  fail "status never showed state '$pattern'"
+}
+
+expect_status() {
+  [[ "$STATUS" -eq "$1" ]] || fail "expected exit code $1, got $STATUS${2:+ ($2)}"
+}
+
+# Bitwise comparison of every dataset of a group (h5diff compares values exactly unless asked not to).
+expect_identical() {
+  local a=$1 b=$2 group=$3
+  h5diff -r "$a" "$b" "$group" "$group" >diff.txt 2>&1 || { cat diff.txt; fail "$a and $b differ in $group"; }
+}
+
+# A job file derived from a source job: KEY=VALUE pairs replace top-level or lut keys by sed.
+job_from() {
+  local source=$1 target=$2; shift 2
+  cp "$PBRFIT_SOURCE_DIR/$source" "$target"
+  local edit
+  for edit in "$@"; do sed -i "$edit" "$target"; done
+}
