@@ -13,6 +13,7 @@ inline double smith_width(double alpha_squared, double x) {
   return std::sqrt(x * x * (1.0 - alpha_squared) + alpha_squared);
 }
 
+// V = numerator() / denominator(n.l); the split lets integrands fold the division into their own.
 template <SmithVisibility Convention>
 class FixedViewVisibility {
  public:
@@ -25,21 +26,30 @@ class FixedViewVisibility {
     }
   }
 
-  // V(v, l) for n.l >= 0.
-  double visibility(double n_dot_l) const {
+  static constexpr double numerator() {
+    if constexpr (Convention == SmithVisibility::height_correlated) return 0.5;
+    if constexpr (Convention == SmithVisibility::separable) return 1.0;
+    return 0.25;
+  }
+
+  // Positive for n.l >= 0 when alpha > 0.
+  double denominator(double n_dot_l) const {
     if constexpr (Convention == SmithVisibility::height_correlated) {
-      return 0.5 / (n_dot_l * view_term_ + n_dot_v_ * smith_width(alpha_squared_, n_dot_l));
+      return n_dot_l * view_term_ + n_dot_v_ * smith_width(alpha_squared_, n_dot_l);
     } else if constexpr (Convention == SmithVisibility::separable) {
-      return 1.0 / ((n_dot_v_ + view_term_) * (n_dot_l + smith_width(alpha_squared_, n_dot_l)));
+      return (n_dot_v_ + view_term_) * (n_dot_l + smith_width(alpha_squared_, n_dot_l));
     } else {
-      return 0.25 / (view_term_ * (n_dot_l * (1.0 - k_) + k_));
+      return view_term_ * (n_dot_l * (1.0 - k_) + k_);
     }
   }
+
+  // V(v, l) for n.l >= 0.
+  double visibility(double n_dot_l) const { return numerator() / denominator(n_dot_l); }
 
  private:
   double alpha_squared_;
   double n_dot_v_;
-  double k_;           // Schlick-GGX k = alpha / 2 (used by separable_schlick only)
+  double k_;                // Schlick-GGX k = alpha / 2 (used by separable_schlick only)
   double view_term_ = 0.0;  // the factor of the denominator that depends on v only
 };
 

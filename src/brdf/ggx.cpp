@@ -25,7 +25,7 @@ double schlick_g1(double alpha, double x) {
 }  // namespace
 
 double ggx_distribution(double alpha, double n_dot_h) {
-  if (n_dot_h <= 0.0) return 0.0;
+  if (n_dot_h < 0.0) return 0.0;
   const double alpha_squared = alpha * alpha;
   const double denominator = n_dot_h * n_dot_h * (alpha_squared - 1.0) + 1.0;
   if (denominator <= 0.0) return std::numeric_limits<double>::infinity();  // alpha = 0, h = n

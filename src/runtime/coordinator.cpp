@@ -128,6 +128,9 @@ void Coordinator::run_stage(std::uint32_t stage) {
 }
 
 void Coordinator::dispatch(std::deque<std::uint64_t>& todo, std::uint32_t stage) {
+  // Two items per rank hide the round trip to the coordinator; near the end one item each keeps the
+  // last items from queueing behind a busy rank while another is idle.
+  const std::size_t depth = todo.size() > std::size_t(2 * mpi_.size()) ? 2 : 1;
   while (!todo.empty() && local_.outstanding() < depth) {
     local_.assign({stage, todo.front()});
     todo.pop_front();

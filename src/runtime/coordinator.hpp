@@ -1,5 +1,5 @@
 #pragma once
-// Rank 0's side of a run: hands out work items (at most `depth` outstanding per rank, so no rank waits
+// Rank 0's side of a run: hands out work items (up to two outstanding per rank, so no rank waits
 // on the coordinator), collects results, streams them to the result file, writes checkpoints and logs
 // progress. Stops early on a signal or a failure anywhere, always leaving a consistent checkpoint.
 #include <chrono>
@@ -27,7 +27,6 @@ class Coordinator {
 
  private:
   using Clock = std::chrono::steady_clock;
-  static constexpr std::size_t depth = 2;
 
   void run_stage(std::uint32_t stage);
   void finish(Outcome outcome);

@@ -13,10 +13,10 @@ constexpr const char* time_limit_forms = "MM, MM:SS, HH:MM:SS, D-HH, D-HH:MM or 
 
 Schema checkpoint_schema() {
   Schema schema("checkpoint");
-  schema.number("interval_seconds", "Save a checkpoint at least this often, in seconds; 0: never by time.")
+  schema.number("interval_seconds", "Save a checkpoint at least this often, in seconds; 0: never.")
       .defaults_to(30.0)
       .at_least(0);
-  schema.integer("interval_items", "Save a checkpoint after this many finished work items; 0: never by count.")
+  schema.integer("interval_items", "Save a checkpoint after this many finished work items; 0: never.")
       .defaults_to(0)
       .at_least(0);
   return schema;

@@ -59,16 +59,18 @@ Schema job_schema(const std::string& kind, const KindCatalogue& kinds) {
   return schema;
 }
 
+[[noreturn]] void reject_unreadable(const std::string& path, int error_number) {
+  throw InputError(SourcePosition{path}, "cannot read job file: " + std::string(std::strerror(error_number)));
+}
+
 std::string read_file(const std::string& path) {
   const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"), std::fclose);
-  if (!file) throw InputError(SourcePosition{path}, "cannot read job file: " + std::string(std::strerror(errno)));
+  if (!file) reject_unreadable(path, errno);
   std::string text;
   char buffer[1 << 16];
   std::size_t count = 0;
   while ((count = std::fread(buffer, 1, sizeof buffer, file.get())) > 0) text.append(buffer, count);
-  if (std::ferror(file.get())) {
-    throw InputError(SourcePosition{path}, "cannot read job file: " + std::string(std::strerror(errno)));
-  }
+  if (std::ferror(file.get())) reject_unreadable(path, errno);
   return text;
 }
 

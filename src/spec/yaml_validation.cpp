@@ -164,6 +164,62 @@ Section validated_section(const Field& field, const YAML::Node& key, const YAML:
   return validate_mapping(value, *field.nested, child_path(path, field.name), source);
 }
 
+// Aliases can make a document a graph. The walk rejects an alias of a mapping or list that encloses
+// it (a cycle), and gives up after visiting more nodes than the text has characters: without aliases
+// every node takes at least one character, so only alias chains that multiply ("billion laughs") get
+// there.
+class DuplicateKeyWalk {
+ public:
+  explicit DuplicateKeyWalk(const YamlSource& source)
+      : source_(source), visits_left_(source.text().size() + 64) {}
+
+  // reached_at: the key (or, at the top, the document) through which node is reached.
+  void walk(const YAML::Node& node, const std::string& path, const YAML::Mark& reached_at) {
+    if (!node.IsMap() && !node.IsSequence()) return;
+    enter(node, path, reached_at);
+    ancestors_.push_back(node);
+    if (node.IsSequence()) {
+      for (std::size_t i = 0; i < node.size(); ++i) {
+        walk(node[i], path + "[" + std::to_string(i) + "]", reached_at);
+      }
+    } else {
+      walk_mapping(node, path);
+    }
+    ancestors_.pop_back();
+  }
+
+ private:
+  void enter(const YAML::Node& node, const std::string& path, const YAML::Mark& reached_at) {
+    for (const YAML::Node& ancestor : ancestors_) {
+      if (node.is(ancestor)) {
+        throw InputError(source_.position(reached_at),
+                         "the value of " + quoted(display_path(path)) +
+                             " is an alias of a mapping or list that contains it");
+      }
+    }
+    if (visits_left_-- == 0) {
+      throw InputError(source_.position(reached_at), "aliases expand the job file to too many values");
+    }
+  }
+
+  void walk_mapping(const YAML::Node& mapping, const std::string& path) {
+    std::set<std::string> seen;
+    for (const auto& pair : mapping) {
+      if (!pair.first.IsScalar()) continue;  // reported by validate_mapping
+      const std::string& key = pair.first.Scalar();
+      if (!seen.insert(key).second) {
+        throw InputError(source_.position(pair.first.Mark()),
+                         "duplicate key " + quoted(key) + " in " + quoted(display_path(path)));
+      }
+      walk(pair.second, child_path(path, key), pair.first.Mark());
+    }
+  }
+
+  const YamlSource& source_;
+  std::size_t visits_left_;
+  std::vector<YAML::Node> ancestors_;  // the mappings and lists enclosing the current node
+};
+
 }  // namespace
 
 std::string display_path(const std::string& path) { return path.empty() ? "job" : path; }
@@ -177,22 +233,7 @@ std::string key_name(const YAML::Node& key, const std::string& path, const YamlS
 }
 
 void reject_duplicate_keys(const YAML::Node& node, const std::string& path, const YamlSource& source) {
-  if (node.IsSequence()) {
-    for (std::size_t i = 0; i < node.size(); ++i) {
-      reject_duplicate_keys(node[i], path + "[" + std::to_string(i) + "]", source);
-    }
-  }
-  if (!node.IsMap()) return;
-  std::set<std::string> seen;
-  for (const auto& pair : node) {
-    if (!pair.first.IsScalar()) continue;  // reported by validate_mapping
-    const std::string& key = pair.first.Scalar();
-    if (!seen.insert(key).second) {
-      throw InputError(source.position(pair.first.Mark()),
-                       "duplicate key " + quoted(key) + " in " + quoted(display_path(path)));
-    }
-    reject_duplicate_keys(pair.second, child_path(path, key), source);
-  }
+  DuplicateKeyWalk(source).walk(node, path, node.Mark());
 }
 
 Section::Entry validate_value(const Field& field, const YAML::Node& key, const YAML::Node& value,

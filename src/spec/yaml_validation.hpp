@@ -13,7 +13,9 @@
 
 namespace pbrfit::spec {
 
-// Throws at the second occurrence of a key repeated within one mapping, anywhere in node.
+// Throws at the second occurrence of a key repeated within one mapping, anywhere in node; also at an
+// alias of a mapping or list that contains it, and when aliases expand the document beyond its size
+// in characters. Afterwards the document is known to be finite, so any walk over it terminates.
 void reject_duplicate_keys(const YAML::Node& node, const std::string& path, const YamlSource& source);
 
 // Requires unique keys (see reject_duplicate_keys).

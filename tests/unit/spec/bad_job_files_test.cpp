@@ -24,6 +24,19 @@ struct BadJob {
 
 const std::string long_name(101, 'a');
 
+// Ten lists of ten aliases of the previous list: 10^10 values once expanded.
+std::string billion_laughs() {
+  std::string text = "name: dfg\nkind: lut\nlut: {function: dfg}\nl0: &l0 [x, x, x, x, x, x, x, x, x, x]\n";
+  for (int level = 1; level <= 10; ++level) {
+    const std::string name = std::to_string(level);
+    const std::string previous = std::string("*l").append(std::to_string(level - 1));
+    text += "l" + name + ": &l" + name + " [" + previous;
+    for (int i = 1; i < 10; ++i) text += ", " + previous;
+    text += "]\n";
+  }
+  return text;
+}
+
 const std::vector<BadJob> bad_jobs = {
     // The document as a whole.
     {"invalid YAML", R"(name: dfg
@@ -34,13 +47,27 @@ kind: [lut
 - kind: lut
 )",
      "test.yaml:1:1: error: a job file must be a mapping of keys to values"},
-    {"top level is a scalar", "dfg\n", "test.yaml:1:1: error: a job file must be a mapping of keys to values"},
+    {"top level is a scalar", "dfg\n",
+     "test.yaml:1:1: error: a job file must be a mapping of keys to values"},
     {"two documents", R"(name: dfg
 kind: lut
 ---
 name: other
 )",
      "test.yaml:4:1: error: a job file must hold a single YAML document"},
+    {"an alias inside what it refers to", R"(name: dfg
+kind: lut
+lut: &x {function: dfg, n_dot_v: *x}
+)",
+     "test.yaml:3:25: error: the value of 'lut.n_dot_v' is an alias of a mapping or list that contains it"},
+    {"a list holding itself", R"(name: dfg
+kind: lut
+lut: {function: dfg}
+loop: &y [1, *y]
+)",
+     "test.yaml:4:1: error: the value of 'loop[1]' is an alias of a mapping or list that contains it"},
+    {"aliases expanding beyond the file", billion_laughs(),
+     "test.yaml:7:1: error: aliases expand the job file to too many values"},
     {"a key that is not a name", R"(name: dfg
 kind: lut
 [a, b]: 1
@@ -246,7 +273,8 @@ resources:
   nodes: 4
 lut: {function: dfg}
 )",
-     "test.yaml:4:3: error: unknown key 'nodes' in 'resources'; valid keys: ranks, time_limit, partition, account"},
+     "test.yaml:4:3: error: unknown key 'nodes' in 'resources'; "
+     "valid keys: ranks, time_limit, partition, account"},
 
     // The kind's section (the test schema in test_kinds.hpp).
     {"required key missing", R"(name: dfg
@@ -341,7 +369,8 @@ kind: lut
 lut:
   function: [dfg]
 )",
-     "test.yaml:4:13: error: 'function' must be one of dfg, directional_albedo, specular_occlusion; got a list"},
+     "test.yaml:4:13: error: 'function' must be one of dfg, directional_albedo, specular_occlusion; "
+     "got a list"},
     {"string given a mapping", R"(name: dfg
 kind: lut
 lut:
@@ -443,9 +472,22 @@ TEST_CASE("a rejection's position and message are also available separately") {
 
 TEST_CASE("messages stay on one line whatever the user wrote") {
   try {
-    (void)parse_job_text("name: dfg\nkind: lut\nseed: \"a\\nb\"\nlut: {function: dfg}\n", "t.yaml", test_kinds());
+    const std::string text = "name: dfg\nkind: lut\nseed: \"a\\nb\"\nlut: {function: dfg}\n";
+    (void)parse_job_text(text, "t.yaml", test_kinds());
     FAIL("accepted");
   } catch (const InputError& error) {
     CHECK(std::string(error.what()) == "t.yaml:3:7: error: 'seed' must be an integer, got 'a\\nb'");
+  }
+}
+
+TEST_CASE("long values are shortened in messages") {
+  const std::string word(70, 'w');
+  try {
+    (void)parse_job_text("name: dfg\nkind: lut\nseed: " + word + "\nlut: {function: dfg}\n", "t.yaml",
+                         test_kinds());
+    FAIL("accepted");
+  } catch (const InputError& error) {
+    CHECK(std::string(error.what()) ==
+          "t.yaml:3:7: error: 'seed' must be an integer, got '" + std::string(60, 'w') + "...'");
   }
 }

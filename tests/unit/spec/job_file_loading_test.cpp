@@ -66,6 +66,7 @@ TEST_CASE("an empty job file") {
   CHECK(rejection([&] { load_job_file(path, test_kinds()); }) == path + ": error: the job file is empty");
   for (const std::string text : {"", "   \n\t\n", "# only a comment\n\n# another\n", "---\n", "--- # c\n...\n"}) {
     INFO("'" << text << "'");
-    CHECK(rejection([&] { parse_job_text(text, "e.yaml", test_kinds()); }) == "e.yaml: error: the job file is empty");
+    CHECK(rejection([&] { parse_job_text(text, "e.yaml", test_kinds()); }) ==
+          "e.yaml: error: the job file is empty");
   }
 }

@@ -52,7 +52,8 @@ TEST_CASE("defaults must fit the field") {
   CHECK_THROWS_AS(schema.integer("i", "").defaults_to(1.5), std::logic_error);
   CHECK_THROWS_AS(schema.boolean("b", "").defaults_to(std::string("yes")), std::logic_error);
   CHECK_THROWS_AS(schema.choice("c", {"a", "b"}, "").defaults_to("z"), std::logic_error);
-  CHECK_THROWS_AS(schema.integer_list("l", 2, 2, "").defaults_to(std::vector<std::int64_t>{1}), std::logic_error);
+  const std::vector<std::int64_t> one_item = {1};
+  CHECK_THROWS_AS(schema.integer_list("l", 2, 2, "").defaults_to(one_item), std::logic_error);
   CHECK_THROWS_AS(schema.section("s", Schema("s"), "").defaults_to(true), std::logic_error);
 }
 

@@ -22,7 +22,9 @@ inline Schema test_lut_schema() {
 
   Schema lut("lut");
   lut.choice("function", {"dfg", "directional_albedo", "specular_occlusion"}, "What to tabulate.").require();
-  lut.integer_list("resolution", 2, 2, "Table size.").defaults_to(std::vector<std::int64_t>{32, 32}).range(1, 4096);
+  lut.integer_list("resolution", 2, 2, "Table size.")
+      .defaults_to(std::vector<std::int64_t>{32, 32})
+      .range(1, 4096);
   lut.integer_list("moments", 1, 3, "Moments to store.").defaults_to(std::vector<std::int64_t>{0}).at_least(0);
   lut.number("tolerance", "Absolute error target.").defaults_to(1e-6).above(0);
   lut.integer("max_evaluations", "Integrand calls per entry.").defaults_to(100000).range(1, 1000000000);
