@@ -31,6 +31,17 @@ int main_entry(int argc, char** argv) {
   auto* status_cmd = app.add_subcommand("status", "state and progress of a result file, also while it runs");
   status_cmd->add_option("result", status_file, "result file (HDF5)")->required();
 
+  SubmitOptions submit;
+  auto* submit_cmd = app.add_subcommand("submit", "submit jobs to Slurm (requeueable, resumed after preemption)");
+  submit_cmd->add_option("jobs", submit.job_files, "job files (YAML), one Slurm job each")->required();
+  submit_cmd->add_flag("--dry-run", submit.dry_run, "print the batch script instead of submitting it");
+  submit_cmd->add_option("--ranks", submit.ranks, "MPI ranks (Slurm tasks), instead of resources.ranks")
+      ->check(CLI::Range(1, 65536));
+  submit_cmd->add_option("--time", submit.time_limit, "time limit, instead of resources.time_limit");
+  submit_cmd->add_option("--partition", submit.partition, "partition, instead of resources.partition");
+  submit_cmd->add_option("--account", submit.account, "account, instead of resources.account");
+  submit_cmd->add_option("--template", submit.template_file, "batch script template")->check(CLI::ExistingFile);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {
@@ -42,6 +53,7 @@ int main_entry(int argc, char** argv) {
   run.verbosity = quiet ? runtime::Verbosity::quiet : verbose ? runtime::Verbosity::verbose : runtime::Verbosity::normal;
   if (*run_cmd) return run_command(run);
   if (*validate_cmd) return validate_command(validate_file);
+  if (*submit_cmd) return submit_command(submit);
   return status_command(status_file);
 }
 

@@ -5,10 +5,10 @@ namespace pbrfit {
 std::string format_error(const SourcePosition& where, const std::string& message) {
   std::string out = where.file;
   if (where.line > 0) {
-    out += ":" + std::to_string(where.line);
-    if (where.column > 0) out += ":" + std::to_string(where.column);
+    out.append(":").append(std::to_string(where.line));
+    if (where.column > 0) out.append(":").append(std::to_string(where.column));
   }
-  return out + ": error: " + message;
+  return out.append(": error: ").append(message);
 }
 
 InputError::InputError(SourcePosition where, const std::string& message)

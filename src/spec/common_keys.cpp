@@ -1,6 +1,7 @@
 #include "common_keys.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cstdint>
 
 #include "message_text.hpp"
@@ -34,7 +35,7 @@ Schema resources_schema() {
 
 Schema make_common_schema() {
   Schema schema("job");
-  schema.string("name", "The job's name: letters, digits, '.', '_' and '-', at most 100 characters.")
+  schema.string("name", "The job's name: letters, digits, '.', '_' and '-', starting with a letter or digit, at most 100 characters.")
       .require();
   schema.string("kind", "The kind of job; selects the section named after it.").require();
   schema.integer("seed", "Random streams derive from (seed, work item).").defaults_to(0).at_least(0);
@@ -52,6 +53,8 @@ bool is_name_character(char c) {
 std::string checked_name(const Section& job) {
   const std::string& name = job.get_string("name");
   if (name.empty()) job.reject("name", "must not be empty");
+  if (!std::isalnum(static_cast<unsigned char>(name.front())))
+    job.reject("name", "must start with a letter or a digit, got " + quoted(name));
   if (!std::ranges::all_of(name, is_name_character)) {
     job.reject("name", "may contain only letters, digits, '.', '_' and '-', got " + quoted(name));
   }

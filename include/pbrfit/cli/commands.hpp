@@ -1,7 +1,8 @@
 #pragma once
-// The pbrfit command line: run, validate, status. Each returns the process exit code (core/error.hpp)
+// The pbrfit command line: run, validate, status, submit. Each returns the process exit code (core/error.hpp)
 // and never lets an exception escape.
 #include <string>
+#include <vector>
 
 #include "pbrfit/runtime/logging.hpp"
 
@@ -15,7 +16,16 @@ struct RunOptions {
   runtime::Verbosity verbosity = runtime::Verbosity::normal;
 };
 
+struct SubmitOptions {
+  std::vector<std::string> job_files;
+  bool dry_run = false;
+  int ranks = 0;  // 0: the job's resources
+  std::string time_limit, partition, account;
+  std::string template_file;  // empty: the installed cluster/sbatch.template
+};
+
 int run_command(const RunOptions& options);
+int submit_command(const SubmitOptions& options);
 int validate_command(const std::string& job_file);
 int status_command(const std::string& result_file);
 

@@ -18,8 +18,8 @@ template <int Dim, int Comp>
 struct Tile {
   Box<Dim> box;
   TileEstimate<Comp> estimate;
-  int depth = 0;      // number of splits from an initial tile
-  bool leaf = true;   // false once split
+  int depth = 0;     // number of splits from an initial tile
+  bool leaf = true;  // false once split
 };
 
 template <int Dim>
@@ -33,7 +33,7 @@ std::array<Box<Dim>, 2> halves(const Box<Dim>& box, int axis) {
 
 // All tiles ever created (index = creation order), the heap of splittable leaves, and the running
 // sum of leaf errors. Invariant: finite_error_sum + (infinite_error_leaves ? inf : 0) equals the sum of
-// the leaf error estimates up to rounding drift; exact_error_sum() recomputes it from the leaves.
+// the leaf error estimates up to rounding drift, which resynchronize() removes.
 template <int Dim, int Comp>
 class TileSet {
  public:

@@ -2,8 +2,10 @@
 
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <numbers>
+#include <utility>
 #include <vector>
 
 #include "pbrfit/core/random_stream.hpp"
@@ -260,41 +262,55 @@ TEST_CASE("Several initial tiles, empty input and non-finite samples") {
 namespace {
 
 // An integrand with the optional bind_outer fast path; counts how often each path is used.
+template <int Dim>
 struct BindableIntegrand {
   int* binds;
   int* plain_calls;
 
   struct Slice {
     double cos_x0;
-    std::array<double, 1> operator()(const std::array<double, 2>& x) const {
-      return {cos_x0 * std::exp(-x[1] * x[1])};
+    std::array<double, 1> operator()(const std::array<double, Dim>& x) const {
+      double rest = 0.0;
+      for (int d = 1; d < Dim; ++d) rest += x[d] * x[d];
+      return {cos_x0 * std::exp(-rest)};
     }
   };
   Slice bind_outer(double x0) const {
     ++*binds;
     return Slice{std::cos(3.0 * x0)};
   }
-  std::array<double, 1> operator()(const std::array<double, 2>& x) const {
+  std::array<double, 1> operator()(const std::array<double, Dim>& x) const {
     ++*plain_calls;
     return Slice{std::cos(3.0 * x[0])}(x);
   }
 };
 
-}  // namespace
-
-TEST_CASE("bind_outer is used once per first coordinate and changes nothing") {
+template <int Dim>
+void check_binding_changes_nothing() {
   int binds = 0;
   int plain_calls = 0;
-  const BindableIntegrand bindable{&binds, &plain_calls};
-  const auto plain = [](const std::array<double, 2>& x) {
-    return std::array<double, 1>{std::cos(3.0 * x[0]) * std::exp(-x[1] * x[1])};
+  const BindableIntegrand<Dim> bindable{&binds, &plain_calls};
+  const auto plain = [](const std::array<double, Dim>& x) {
+    double rest = 0.0;
+    for (int d = 1; d < Dim; ++d) rest += x[d] * x[d];
+    return std::array<double, 1>{std::cos(3.0 * x[0]) * std::exp(-rest)};
   };
   AdaptiveOptions options;
   options.abs_tolerance = 1e-12;
-  const auto fast = integrate_on<2, 1>(bindable, unit_box<2>(), options);
-  const auto slow = integrate_on<2, 1>(plain, unit_box<2>(), options);
+  const auto fast = integrate_on<Dim, 1>(bindable, unit_box<Dim>(), options);
+  const auto slow = integrate_on<Dim, 1>(plain, unit_box<Dim>(), options);
+  CAPTURE(Dim);
   CHECK(plain_calls == 0);
-  CHECK(static_cast<std::size_t>(binds) * 15 == fast.evaluations);
+  std::size_t slice_points = 1;
+  for (int d = 1; d < Dim; ++d) slice_points *= 15;
+  CHECK(static_cast<std::size_t>(binds) * slice_points == fast.evaluations);
   CHECK(fast.value[0] == slow.value[0]);
   CHECK(fast.evaluations == slow.evaluations);
+}
+
+}  // namespace
+
+TEST_CASE("bind_outer is used once per first coordinate and changes nothing") {
+  check_binding_changes_nothing<2>();
+  check_binding_changes_nothing<3>();
 }

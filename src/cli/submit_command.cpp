@@ -1,0 +1,75 @@
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "pbrfit/cli/commands.hpp"
+#include "pbrfit/core/error.hpp"
+#include "pbrfit/jobs/job_kinds.hpp"
+#include "pbrfit/spec/job_spec.hpp"
+#include "pbrfit/store/atomic_file.hpp"
+#include "pbrfit/submit/batch_script.hpp"
+#include "pbrfit/submit/sbatch.hpp"
+
+namespace pbrfit::cli {
+
+namespace {
+
+std::string read_text(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError({path}, "cannot read the batch script template");
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+submit::ResourceOverrides overrides_of(const SubmitOptions& options) {
+  return {options.ranks, options.time_limit, options.partition, options.account};
+}
+
+// Validates one job, renders its script and submits it (or prints it for --dry-run).
+void submit_one(const std::string& job_file, const SubmitOptions& options, const std::string& template_path,
+                const std::string& template_text) {
+  const auto job = spec::load_job_file(job_file, jobs::kind_catalogue());
+  jobs::make_workload(job);
+  const auto batch = submit::batch_job_for(job, overrides_of(options),
+                                           std::filesystem::read_symlink("/proc/self/exe").string(),
+                                           std::filesystem::current_path().string());
+  const std::string script = submit::render_batch_script(batch, template_text, template_path);
+  if (options.dry_run) {
+    std::printf("%s", script.c_str());
+    return;
+  }
+  std::filesystem::create_directories(std::filesystem::path(batch.script).parent_path());
+  store::replace_file_atomically(batch.script, std::as_bytes(std::span(script.data(), script.size())));
+  const std::string id = submit::run_sbatch(batch.script);
+  std::string log = batch.log;
+  if (const auto at = log.find("%j"); at != std::string::npos) log.replace(at, 2, id);
+  std::printf("submitted %s as Slurm job %s (%d rank%s, time limit %s)\n  result: %s\n  log:    %s\n  script: %s\n",
+              job_file.c_str(), id.c_str(), batch.ranks, batch.ranks == 1 ? "" : "s", batch.time_limit.c_str(),
+              batch.output.c_str(), log.c_str(), batch.script.c_str());
+  std::printf("  watch:  pbrfit status %s\n", batch.output.c_str());
+}
+
+}  // namespace
+
+int submit_command(const SubmitOptions& options) {
+  int worst = exit_success;
+  const std::string template_path = options.template_file.empty() ? PBRFIT_SBATCH_TEMPLATE : options.template_file;
+  for (const auto& job_file : options.job_files) {
+    try {
+      submit_one(job_file, options, template_path, read_text(template_path));
+    } catch (const InputError& e) {
+      std::fprintf(stderr, "%s\n", e.what());
+      worst = std::max(worst, int(exit_invalid_input));
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "pbrfit: error: %s\n", e.what());
+      worst = std::max(worst, int(exit_run_failure));
+    }
+  }
+  return worst;
+}
+
+}  // namespace pbrfit::cli
