@@ -105,7 +105,7 @@ strays=()
 for env in /proc/[0-9]*/environ; do
   pid=${env#/proc/}; pid=${pid%/environ}
   [[ $pid == "$$" ]] && continue
-  if tr '\0' '\n' <"$env" 2>/dev/null | grep -qxF "LOCAL_SLURM_DAEMON_OF=$state"; then
+  if { tr '\0' '\n' <"$env"; } 2>/dev/null | grep -qxF "LOCAL_SLURM_DAEMON_OF=$state"; then
     strays+=("$pid")
     # The tasks of a step are its slurmstepd's children (process tree; linuxproc tracks no more).
     read -r -a children <<<"$(cat "/proc/$pid/task/"*/children 2>/dev/null | tr '\n' ' ')"

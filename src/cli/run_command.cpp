@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "exit_on_error.hpp"
 #include "pbrfit/cli/commands.hpp"
 #include "pbrfit/core/error.hpp"
 #include "pbrfit/jobs/job_kinds.hpp"
@@ -41,17 +42,13 @@ int run_validated(const spec::JobSpec& job, const runtime::Workload& workload, c
 int run_command(const RunOptions& options) {
   // Every rank validates the same file; only the one that will be rank 0 reports a rejection.
   const bool reporter = runtime::launcher_rank() == 0;
-  try {
-    const auto job = spec::load_job_file(options.job_file, jobs::kind_catalogue());
-    const auto workload = jobs::make_workload(job);
-    return run_validated(job, *workload, options);
-  } catch (const InputError& e) {
-    if (reporter) std::fprintf(stderr, "%s\n", e.what());
-    return exit_invalid_input;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "pbrfit: error: %s\n", e.what());
-    return exit_run_failure;
-  }
+  return exit_on_error(
+      [&] {
+        const auto job = spec::load_job_file(options.job_file, jobs::kind_catalogue());
+        const auto workload = jobs::make_workload(job);
+        return run_validated(job, *workload, options);
+      },
+      reporter);
 }
 
 }  // namespace pbrfit::cli

@@ -8,6 +8,7 @@
 #include <string>
 #include <thread>
 
+#include "exit_on_error.hpp"
 #include "pbrfit/cli/commands.hpp"
 #include "pbrfit/core/error.hpp"
 #include "pbrfit/store/checkpoint_file.hpp"
@@ -56,7 +57,7 @@ std::string state_of(const store::ResultSummary& s, const std::string& path) {
 }  // namespace
 
 int status_command(const std::string& result_file) {
-  try {
+  return exit_on_error([&] {
     const auto s = read_summary_retrying(result_file);
     const double percent = s.items_total ? 100.0 * double(s.items_done) / double(s.items_total) : 0.0;
     std::printf("result:    %s\n", result_file.c_str());
@@ -69,13 +70,7 @@ int status_command(const std::string& result_file) {
                 s.finished_utc.empty() ? "" : ", finished ", s.finished_utc.c_str());
     std::printf("headline:  %s\n", s.headline.c_str());
     return exit_success;
-  } catch (const InputError& e) {
-    std::fprintf(stderr, "%s\n", e.what());
-    return exit_invalid_input;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "pbrfit: error: %s\n", e.what());
-    return exit_run_failure;
-  }
+  });
 }
 
 }  // namespace pbrfit::cli

@@ -5,6 +5,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "exit_on_error.hpp"
 #include "pbrfit/cli/commands.hpp"
 #include "pbrfit/core/error.hpp"
 #include "pbrfit/jobs/job_kinds.hpp"
@@ -59,15 +60,11 @@ int submit_command(const SubmitOptions& options) {
   int worst = exit_success;
   const std::string template_path = options.template_file.empty() ? PBRFIT_SBATCH_TEMPLATE : options.template_file;
   for (const auto& job_file : options.job_files) {
-    try {
+    const int code = exit_on_error([&] {
       submit_one(job_file, options, template_path, read_text(template_path));
-    } catch (const InputError& e) {
-      std::fprintf(stderr, "%s\n", e.what());
-      worst = std::max(worst, int(exit_invalid_input));
-    } catch (const std::exception& e) {
-      std::fprintf(stderr, "pbrfit: error: %s\n", e.what());
-      worst = std::max(worst, int(exit_run_failure));
-    }
+      return int(exit_success);
+    });
+    worst = std::max(worst, code);
   }
   return worst;
 }

@@ -123,7 +123,7 @@ void Coordinator::run_stage(std::uint32_t stage) {
       failure_ = e.what();
     }
     maybe_log_progress();
-    if (!busy) std::this_thread::sleep_for(std::chrono::microseconds(200));
+    if (!busy) std::this_thread::sleep_for(std::chrono::microseconds(1000));
   }
 }
 
