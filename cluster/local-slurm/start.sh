@@ -72,9 +72,6 @@ cleanup_on_failure() {
 }
 trap cleanup_on_failure EXIT
 
-# Daemons get this marker in their environment (never given to clients), so stop.sh can find
-# slurmstepd processes they leave behind.
-export LOCAL_SLURM_DAEMON_OF="$state"
 export SLURM_CONF="$conf"
 
 # Start DAEMON ARGS... in the foreground of its own session, detached from our stdout,

@@ -6,8 +6,8 @@
 # 1. If its slurmctld still answers, cancels this cluster's jobs and waits (bounded) for them.
 # 2. Sends TERM to the daemons listed in STATE_DIR/pids (slurmd, slurmctld, munged), by PID,
 #    waits up to LOCAL_SLURM_STOP_TIMEOUT (15) s, then KILLs the ones still alive.
-# 3. KILLs any slurmstepd left by this slurmd (found by the LOCAL_SLURM_DAEMON_OF=STATE_DIR
-#    marker that start.sh puts only in its daemons' environment) and those steps' tasks.
+# 3. Stops any slurmstepd left by this slurmd (one with a file under STATE_DIR open) and the
+#    processes below it (the step's tasks).
 # --clean then removes STATE_DIR. Never signals processes by name. Exit 0 when nothing of this
 # cluster is left running (also when it was not running at all).
 set -euo pipefail
@@ -41,12 +41,13 @@ is_ours() {
   [[ $comm == "$name" ]]
 }
 
-# TERM the given PIDs, wait up to $timeout_s, KILL the rest, wait a little more.
+# terminate SECONDS PID...: TERM the PIDs, wait up to SECONDS, KILL the rest, wait a little more.
 terminate() {
-  local pid left deadline
+  local wait_s=$1 pid left deadline
+  shift
   [[ $# -gt 0 ]] || return 0
   kill -TERM "$@" 2>/dev/null || true
-  deadline=$((SECONDS + timeout_s))
+  deadline=$((SECONDS + wait_s))
   while :; do
     left=()
     for pid in "$@"; do alive "$pid" && left+=("$pid"); done
@@ -54,7 +55,7 @@ terminate() {
     ((SECONDS < deadline)) || break
     sleep 0.2
   done
-  log "still alive after ${timeout_s} s, sending KILL: ${left[*]}"
+  log "still alive after ${wait_s} s, sending KILL: ${left[*]}"
   kill -KILL "${left[@]}" 2>/dev/null || true
   deadline=$((SECONDS + 5))
   while ((SECONDS < deadline)); do
@@ -96,25 +97,34 @@ for name in slurmd slurmctld munged; do
   [[ -n $pid ]] || continue
   if is_ours "$pid" "$name"; then
     log "stopping $name (pid $pid)"
-    terminate "$pid" || rc=1
+    terminate "$timeout_s" "$pid" || rc=1
   fi
 done
 
-# 3. Leftover slurmstepd of this slurmd, and the tasks of their steps.
+# 3. Leftover slurmstepd of this slurmd (they outlive slurmd by design) and their step's tasks.
+#    A slurmstepd is ours when it has a file under STATE_DIR open (it logs to
+#    STATE_DIR/log/slurmd.log); its tasks are its descendants.
+descendants() {
+  local c
+  # shellcheck disable=SC2013  # the file is one line of space-separated PIDs
+  for c in $(cat "/proc/$1/task/"*/children 2>/dev/null); do
+    echo "$c"
+    descendants "$c"
+  done
+}
 strays=()
-for env in /proc/[0-9]*/environ; do
-  pid=${env#/proc/}; pid=${pid%/environ}
-  [[ $pid == "$$" ]] && continue
-  if { tr '\0' '\n' <"$env"; } 2>/dev/null | grep -qxF "LOCAL_SLURM_DAEMON_OF=$state"; then
-    strays+=("$pid")
-    # The tasks of a step are its slurmstepd's children (process tree; linuxproc tracks no more).
-    read -r -a children <<<"$(cat "/proc/$pid/task/"*/children 2>/dev/null | tr '\n' ' ')"
-    strays+=("${children[@]}")
+for dir in /proc/[0-9]*; do
+  pid=${dir#/proc/}
+  [[ $(cat "$dir/comm" 2>/dev/null) == slurmstepd ]] || continue
+  alive "$pid" || continue
+  if find "$dir/fd" -mindepth 1 -maxdepth 1 -lname "$state/*" -print -quit 2>/dev/null | grep -q .; then
+    read -r -a tree <<<"$(descendants "$pid" | tr '\n' ' ')"
+    strays+=("$pid" "${tree[@]}")
   fi
 done
 if [[ ${#strays[@]} -gt 0 ]]; then
   log "stopping leftover step processes: ${strays[*]}"
-  terminate "${strays[@]}" || rc=1
+  terminate 5 "${strays[@]}" || rc=1   # slurmstepd ignores TERM: short wait, then KILL
 fi
 
 if [[ $rc -eq 0 ]]; then

@@ -64,6 +64,7 @@ int status_command(const std::string& result_file) {
     std::printf("job:       %s (%s), %lld rank%s, seed %llu\n", s.job_name.c_str(), s.job_kind.c_str(),
                 static_cast<long long>(s.ranks), s.ranks == 1 ? "" : "s", static_cast<unsigned long long>(s.seed));
     std::printf("state:     %s\n", state_of(s, result_file).c_str());
+    if (!s.scheduler_job.empty()) std::printf("scheduler: %s\n", s.scheduler_job.c_str());
     std::printf("progress:  %llu of %llu work items (%.1f%%)\n", static_cast<unsigned long long>(s.items_done),
                 static_cast<unsigned long long>(s.items_total), percent);
     std::printf("elapsed:   %.1f s (started %s%s%s)\n", s.elapsed_seconds, s.started_utc.c_str(),

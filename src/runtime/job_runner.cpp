@@ -3,6 +3,7 @@
 #include <spdlog/spdlog.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -76,6 +77,13 @@ bool result_is_complete_and_ours(const RunSettings& s, bool have_checkpoint) {
   }
 }
 
+std::string scheduler_job() {
+  const char* id = std::getenv("SLURM_JOB_ID");
+  if (!id) return "";
+  const char* restart = std::getenv("SLURM_RESTART_COUNT");
+  return std::string("slurm job ") + id + ", restart " + (restart ? restart : "0");
+}
+
 Preparation prepare(const MpiSession& mpi, const Workload& workload, const RunSettings& s) {
   Preparation p;
   auto checkpoint = usable_checkpoint(s);
@@ -89,7 +97,8 @@ Preparation prepare(const MpiSession& mpi, const Workload& workload, const RunSe
   p.resumed.job_text = s.job_text;
   const auto parent = std::filesystem::path(s.output).parent_path();
   if (!parent.empty()) std::filesystem::create_directories(parent);
-  store::RunInfo info{s.job_name, s.job_kind, s.job_text, s.seed, mpi.size(), store::utc_now_iso8601()};
+  store::RunInfo info{s.job_name, s.job_kind, s.job_text, s.seed, mpi.size(), store::utc_now_iso8601(),
+                      scheduler_job()};
   p.file = std::make_unique<store::ResultFile>(s.output, workload.layout(), info);
   return p;
 }

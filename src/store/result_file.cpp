@@ -143,6 +143,7 @@ ResultFile::ResultFile(std::string path, ResultLayout layout, const RunInfo& inf
   h5::write_string_attribute(file, "started_utc", info.started_utc);
   h5::write_string_attribute(file, "writer_host", host_name());
   h5::write_i64_attribute(file, "writer_pid", getpid());
+  h5::write_string_attribute(file, "scheduler_job", info.scheduler_job);
   write_progress(file, Progress{});
   for (const auto& group : layout_.groups) create_group(file, group);
 }
@@ -182,6 +183,7 @@ ResultSummary read_result_summary(const std::string& path) {
     s.headline = h5::read_string_attribute(file, "headline");
     s.updated_utc = h5::read_string_attribute(file, "updated_utc");
     s.writer_host = h5::read_string_attribute(file, "writer_host");
+    s.scheduler_job = h5::read_string_attribute(file, "scheduler_job");
     s.seed = std::uint64_t(h5::read_i64_attribute(file, "seed"));
     s.items_done = std::uint64_t(h5::read_i64_attribute(file, "items_done"));
     s.items_total = std::uint64_t(h5::read_i64_attribute(file, "items_total"));

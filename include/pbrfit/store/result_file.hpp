@@ -5,7 +5,7 @@
 //
 // Root attributes: pbrfit_version, job_name, job_kind, job_yaml, seed, ranks, state
 // (running | complete | interrupted | failed), started_utc, finished_utc, items_done, items_total,
-// elapsed_seconds, headline, updated_utc, writer_host, writer_pid.
+// elapsed_seconds, headline, updated_utc, writer_host, writer_pid, scheduler_job.
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -21,6 +21,7 @@ struct RunInfo {
   std::uint64_t seed = 0;
   int ranks = 1;
   std::string started_utc;
+  std::string scheduler_job;  // e.g. "slurm job 1234, restart 1"; empty outside a batch system
 };
 
 struct Progress {
@@ -54,7 +55,7 @@ class ResultFile {
 // What `status` and the overwrite check read back; throws InputError if the file is not a pbrfit result.
 struct ResultSummary {
   std::string pbrfit_version, job_name, job_kind, job_yaml, state, started_utc, finished_utc;
-  std::string headline, updated_utc, writer_host;
+  std::string headline, updated_utc, writer_host, scheduler_job;
   std::uint64_t seed = 0, items_done = 0, items_total = 0;
   std::int64_t ranks = 0, writer_pid = 0;
   double elapsed_seconds = 0.0;

@@ -28,7 +28,7 @@ store::ResultLayout grid_layout() {
   return {{g}};
 }
 
-store::RunInfo info() { return {"test-job", "lut", "name: test-job\n", 5, 2, "2026-01-01T00:00:00Z"}; }
+store::RunInfo info() { return {"test-job", "lut", "name: test-job\n", 5, 2, "2026-01-01T00:00:00Z", "slurm job 7, restart 1"}; }
 
 }  // namespace
 
@@ -59,6 +59,7 @@ TEST_CASE("blocks land at their offsets; rows not yet written read as NaN; progr
   CHECK(s.items_done == 1);
   CHECK(s.items_total == 3);
   CHECK(s.headline == "one row");
+  CHECK(s.scheduler_job == "slurm job 7, restart 1");
 
   file.add({{"grid", "value", {0, 0}, {2, 2}, {1, 2, 3, 4}}});
   p.state = "complete";
