@@ -14,7 +14,7 @@
 # Stop with: cluster/local-slurm/stop.sh STATE_DIR [--clean]
 #
 # Tunables (environment): LOCAL_SLURM_KILL_WAIT (10), LOCAL_SLURM_CRED_EXPIRE (10),
-# LOCAL_SLURM_MIN_JOB_AGE (300), LOCAL_SLURM_START_TIMEOUT (30).
+# LOCAL_SLURM_MIN_JOB_AGE (60), LOCAL_SLURM_START_TIMEOUT (30).
 set -euo pipefail
 
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
@@ -37,8 +37,13 @@ PATH=$PATH:/usr/sbin
 
 kill_wait=${LOCAL_SLURM_KILL_WAIT:-10}
 cred_expire=${LOCAL_SLURM_CRED_EXPIRE:-10}
-min_job_age=${LOCAL_SLURM_MIN_JOB_AGE:-300}
+min_job_age=${LOCAL_SLURM_MIN_JOB_AGE:-60}
 start_timeout=${LOCAL_SLURM_START_TIMEOUT:-30}
+for v in kill_wait cred_expire min_job_age start_timeout; do
+  [[ ${!v} =~ ^[0-9]+$ ]] || die "$v must be a whole number of seconds, got '${!v}'"
+done
+# Slurm rejects cred_expire < 5 ("AuthInfo=cred_expire=N invalid") and silently uses 120.
+((cred_expire >= 5)) || die "LOCAL_SLURM_CRED_EXPIRE must be >= 5 (Slurm ignores smaller values)"
 
 # --- state directory -------------------------------------------------------------------------
 if [[ $# -eq 1 ]]; then

@@ -58,7 +58,9 @@ cat "$log"
 [[ $saw_interrupted == yes ]] || fail "status never showed the job interrupted between requeues"
 grep -q "restart 0" "$log" || fail "the log lacks the first run"
 grep -q "restart 1" "$log" || fail "the job did not run again after the requeue"
-grep -q "pbrfit: exit code 75" "$log" || fail "the first run did not stop with a checkpoint (exit 75)"
+# On requeue Slurm ends the batch shell with the job, so the ranks' exit code is srun's to report.
+grep -q "interrupted: checkpoint saved to $WORK/result.h5.checkpoint" "$log" || fail "the first run saved no checkpoint"
+grep -q "Exited with exit code 75" "$log" || fail "the first run's ranks did not exit 75"
 grep -q "resuming: [1-9][0-9]* of 512 work items already done" "$log" || fail "the second run did not resume"
 expect_identical reference.h5 result.h5 /dfg
 echo "PASS"
