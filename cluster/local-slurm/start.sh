@@ -48,6 +48,7 @@ done
 # --- state directory -------------------------------------------------------------------------
 if [[ $# -eq 1 ]]; then
   state=$1
+  [[ $state != *[[:space:]@\|]* ]] || die "STATE_DIR must not contain blanks, '@' or '|': $state"
   mkdir -p "$state"
 else
   state=$(mktemp -d "${TMPDIR:-/tmp}/local-slurm.XXXXXX")
@@ -55,14 +56,15 @@ fi
 state=$(cd "$state" && pwd -P)
 [[ $state != *[[:space:]@\|]* ]] || die "STATE_DIR must not contain blanks, '@' or '|': $state"
 if [[ -s $state/pids ]]; then
-  while read -r _ pid; do
-    if [[ -d /proc/$pid ]] && ! grep -q '^State:.*Z' "/proc/$pid/status" 2>/dev/null; then
+  while read -r name pid; do
+    if [[ -d /proc/$pid ]] && ! grep -q '^State:.*Z' "/proc/$pid/status" 2>/dev/null &&
+       [[ $(cat "/proc/$pid/comm" 2>/dev/null) == "$name" ]]; then
       die "$state already has running daemons (pid $pid); stop it first: $here/stop.sh $state"
     fi
   done <"$state/pids"
 fi
-mkdir -p "$state"/{ctld,spool,log,run,munge}
-chmod 700 "$state" "$state/munge"
+mkdir -p "$state"/{ctld,spool,log,run,munge,tmp}
+chmod 755 "$state/munge"   # munged warns unless the socket dir is world-searchable
 : >"$state/pids"
 : >"$state/plugstack.conf"   # empty: no SPANK plugins from /etc/slurm/plugstack.conf.d
 
