@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Against a real single-node Slurm cluster (cluster/local-slurm): `pbrfit submit` a 2-rank job, requeue it
-# mid-run with `scontrol requeue`, wait for it to finish, and check that the result is bitwise identical
-# to a plain `mpirun -np 2` run. Skipped (exit 77, with the reason) where Slurm is not installed.
+# mid-run with `scontrol requeue` (SIGTERM), then signal it as Slurm's time-limit warning does (SIGUSR1: the
+# job requeues itself), wait for it to finish, and check that the result is bitwise identical to a plain
+# `mpirun -np 2` run. Skipped (exit 77, with the reason) where Slurm is not installed.
 source "$(dirname "$0")/lib/common.bash"
 
 cluster="$PBRFIT_SOURCE_DIR/cluster/local-slurm"
@@ -42,25 +43,40 @@ done
 [[ "$(job_state)" == RUNNING ]] || fail "the job is not running when it should be requeued"
 before=$(items_done)
 
-note "scontrol requeue $id after $before items"
+# Waits until the result file reports STATE (and, optionally, at least N items), failing after a while.
+wait_for() {
+  local state=$1 items=${2:-0} deadline=$((SECONDS + 240))
+  while :; do
+    if "$PBRFIT" status result.h5 > status.txt 2>/dev/null && grep -q "^state: *$state" status.txt &&
+       [[ "$(sed -n 's/^progress: *\([0-9]*\) of.*/\1/p' status.txt)" -ge $items ]]; then
+      return 0
+    fi
+    (( SECONDS < deadline )) || { cat status.txt "$log"; squeue; fail "the job never reached '$state' with $items items"; }
+    sleep 0.2
+  done
+}
+
+note "scontrol requeue $id after $before items: SIGTERM, checkpoint, Slurm requeues"
 scontrol requeue "$id"
-saw_interrupted=no
-deadline=$((SECONDS + 240))
-while :; do
-  if "$PBRFIT" status result.h5 > status.txt 2>/dev/null; then
-    grep -q "^state: *interrupted" status.txt && saw_interrupted=yes
-    grep -q "^state: *complete" status.txt && [[ -z "$(job_state)" || "$(job_state)" == COMPLETED ]] && break
-  fi
-  (( SECONDS < deadline )) || { cat status.txt "$log"; squeue; fail "the requeued job did not complete"; }
-  sleep 0.2
-done
+wait_for interrupted
+grep -q "^scheduler: *slurm job $id, restart 0" status.txt || fail "status does not name the Slurm job"
+
+note "the time-limit warning path: SIGUSR1 to the ranks, checkpoint, the script requeues the job"
+wait_for running 200
+grep -q "^scheduler: *slurm job $id, restart 1" status.txt || fail "the requeued run does not say it is restart 1"
+scancel --signal=USR1 "$id"
+wait_for interrupted
+wait_for complete 512
+while [[ -n "$(job_state)" && "$(job_state)" != COMPLETED ]]; do sleep 0.2; done
 cat "$log"
-[[ $saw_interrupted == yes ]] || fail "status never showed the job interrupted between requeues"
-grep -q "restart 0" "$log" || fail "the log lacks the first run"
-grep -q "restart 1" "$log" || fail "the job did not run again after the requeue"
-# On requeue Slurm ends the batch shell with the job, so the ranks' exit code is srun's to report.
-grep -q "interrupted: checkpoint saved to $WORK/result.h5.checkpoint" "$log" || fail "the first run saved no checkpoint"
-grep -q "Exited with exit code 75" "$log" || fail "the first run's ranks did not exit 75"
-grep -q "resuming: [1-9][0-9]* of 512 work items already done" "$log" || fail "the second run did not resume"
+grep -q "restart 2" "$log" || fail "the job did not requeue itself after exit 75"
+# On `scontrol requeue` Slurm ends the batch shell with the job, so srun reports the ranks' exit code;
+# after SIGUSR1 the script itself sees 75 and requeues.
+grep -q "Exited with exit code 75" "$log" || fail "the requeued run's ranks did not exit 75"
+grep -q "^pbrfit: exit code 75" "$log" || fail "the batch script did not see exit code 75 after SIGUSR1"
+[[ $(grep -c "interrupted: checkpoint saved to $WORK/result.h5.checkpoint" "$log") -eq 2 ]] ||
+  fail "the two interrupted runs did not both save a checkpoint"
+[[ $(grep -c "resuming: [1-9][0-9]* of 512 work items already done" "$log") -eq 2 ]] || fail "the runs did not resume"
+"$PBRFIT" status result.h5 | grep -q "^scheduler: *slurm job $id, restart 2" || fail "the final run is not restart 2"
 expect_identical reference.h5 result.h5 /dfg
 echo "PASS"
