@@ -10,8 +10,9 @@ expect_status 0
 
 note "SIGTERM to every rank after some items: checkpoint and exit 75"
 start_ranks 2 run job.yaml
-wait_for_items result.h5 40
-kill -TERM $(rank_pids)
+wait_for_items result.h5 60
+pids=$(rank_pids)
+kill -TERM $pids
 wait_background
 expect_status 75 "ranks stopped by SIGTERM"
 [[ -f result.h5.checkpoint ]] || fail "no checkpoint after SIGTERM"
@@ -20,7 +21,7 @@ first_done=$("$PBRFIT" status result.h5 | sed -n 's/^progress: *\([0-9]*\) of.*/
 
 note "resume, then SIGKILL the whole job"
 start_ranks 2 run job.yaml --resume
-wait_for_items result.h5 $((first_done + 60))
+wait_for_items result.h5 $((first_done + 120))
 kill_session KILL
 wait_background
 [[ -f result.h5.checkpoint ]] || fail "no checkpoint survived SIGKILL"
@@ -29,8 +30,9 @@ wait_for_state result.h5 "interrupted (the job stopped without saying so; its ch
 note "resume on 1 rank, then SIGINT"
 killed_done=$("$PBRFIT" status result.h5 | sed -n 's/^progress: *\([0-9]*\) of.*/\1/p')
 start_ranks 1 run job.yaml --resume
-wait_for_items result.h5 $((killed_done + 20))
-kill -INT $(rank_pids)
+wait_for_items result.h5 $((killed_done + 30))
+pids=$(rank_pids)
+kill -INT $pids
 wait_background
 expect_status 75 "rank stopped by SIGINT"
 

@@ -2,6 +2,8 @@
 // GGX (Trowbridge-Reitz) microfacet distribution and Smith masking-shadowing, isotropic.
 // Angles are given as cosines with respect to the surface normal; alpha is the GGX width (alpha >= 0).
 
+#include <array>
+
 namespace pbrfit::brdf {
 
 // D(h): normalized so that the integral of D(h) (n.h) over the hemisphere is 1 (alpha > 0); 0 for n.h < 0.
@@ -15,6 +17,9 @@ enum class SmithVisibility {
   separable_schlick,    // UE4 / Karis: Schlick-GGX G1 with k = alpha / 2, separable
   height_correlated,    // Heitz 2014 / Filament: 1 / (1 + Lambda(v) + Lambda(l))
 };
+
+inline constexpr std::array<SmithVisibility, 3> all_smith_visibilities = {
+    SmithVisibility::separable, SmithVisibility::separable_schlick, SmithVisibility::height_correlated};
 
 // G(v, l) for the given convention; 0 if n.v <= 0 or n.l <= 0, 1 in the mirror limit alpha = 0.
 double smith_masking_shadowing(SmithVisibility visibility, double alpha, double n_dot_v, double n_dot_l);

@@ -50,8 +50,19 @@ kill_group_if_running() {
   fi
 }
 
-# The pbrfit processes (ranks) of the background job.
-rank_pids() { pgrep -s "$BACKGROUND_PID" -x pbrfit || true; }
+# The pbrfit processes (ranks) of the background job; fails the test when there are none.
+rank_pids() {
+  local pids
+  pids=$(pgrep -s "$BACKGROUND_PID" -x pbrfit) || fail "the job's ranks are gone (did it finish too early?)"
+  echo $pids
+}
+
+# True while the background job runs (a finished job that is not yet waited for is a zombie).
+background_running() {
+  local state
+  state=$(ps -o stat= -p "$BACKGROUND_PID" 2>/dev/null) || return 1
+  [[ $state != Z* ]]
+}
 
 # Sends a signal to mpirun and every rank at once.
 kill_session() { pkill "-$1" -s "$BACKGROUND_PID" 2>/dev/null || true; }
@@ -62,7 +73,7 @@ wait_for_items() {
   while (( SECONDS < deadline )); do
     done=$("$PBRFIT" status "$file" 2>/dev/null | sed -n 's/^progress: *\([0-9]*\) of.*/\1/p' || true)
     if [[ -n "$done" ]] && (( done >= wanted )); then return 0; fi
-    kill -0 "$BACKGROUND_PID" 2>/dev/null || fail "the job ended before $wanted items were done"
+    background_running || fail "the job ended before $wanted items were done"
     sleep 0.1
   done
   fail "timed out waiting for $wanted items in $file"

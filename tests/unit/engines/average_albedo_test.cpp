@@ -9,13 +9,6 @@
 using namespace pbrfit::brdf;
 using pbrfit::integrate::AdaptiveOptions;
 
-namespace {
-
-constexpr std::array<SmithVisibility, 3> all_visibilities = {
-    SmithVisibility::separable, SmithVisibility::separable_schlick, SmithVisibility::height_correlated};
-
-}  // namespace
-
 TEST_CASE("Average albedo of the mirror is 1") {
   const AverageAlbedo mirror = integrate_average_albedo(0.0, SmithVisibility::height_correlated, AdaptiveOptions{});
   CHECK(mirror.converged);
@@ -24,7 +17,7 @@ TEST_CASE("Average albedo of the mirror is 1") {
 
 TEST_CASE("Average albedo converges, decreases with roughness and matches Monte Carlo") {
   std::uint64_t item = 0;
-  for (SmithVisibility visibility : all_visibilities) {
+  for (SmithVisibility visibility : all_smith_visibilities) {
     double previous = 1.0;
     for (double alpha : {0.1, 0.5, 1.0}) {
       const AverageAlbedo albedo = integrate_average_albedo(alpha, visibility, AdaptiveOptions{});

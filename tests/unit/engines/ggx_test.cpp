@@ -13,13 +13,6 @@ using namespace pbrfit::brdf;
 using pbrfit::integrate::AdaptiveOptions;
 using pbrfit::integrate::Box;
 
-namespace {
-
-constexpr std::array<SmithVisibility, 3> all_visibilities = {
-    SmithVisibility::separable, SmithVisibility::separable_schlick, SmithVisibility::height_correlated};
-
-}  // namespace
-
 TEST_CASE("GGX D matches its closed form") {
   CHECK(std::abs(ggx_distribution(1.0, 0.3) - 1.0 / std::numbers::pi) < 1e-15);  // alpha = 1 is uniform
   const double alpha = 0.2;
@@ -80,7 +73,7 @@ TEST_CASE("Masking-shadowing conventions") {
       }
     }
   }
-  for (SmithVisibility visibility : all_visibilities) {
+  for (SmithVisibility visibility : all_smith_visibilities) {
     CHECK(smith_masking_shadowing(visibility, 0.4, 0.0, 0.5) == 0.0);
     CHECK(smith_masking_shadowing(visibility, 0.4, 0.5, -0.1) == 0.0);
     CHECK(smith_masking_shadowing(visibility, 0.0, 0.3, 0.5) == 1.0);  // mirror limit
@@ -88,7 +81,7 @@ TEST_CASE("Masking-shadowing conventions") {
 }
 
 TEST_CASE("Visibility equals G / (4 n.v n.l) and stays finite at grazing angles") {
-  for (SmithVisibility visibility : all_visibilities) {
+  for (SmithVisibility visibility : all_smith_visibilities) {
     for (double alpha : {0.01, 0.3, 1.0}) {
       for (double n_dot_v : {1e-3, 0.2, 0.7, 1.0}) {
         for (double n_dot_l : {1e-3, 0.4, 1.0}) {

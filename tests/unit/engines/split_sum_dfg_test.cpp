@@ -14,9 +14,6 @@ using pbrfit::test::LightSampling;
 
 namespace {
 
-constexpr std::array<SmithVisibility, 3> all_visibilities = {
-    SmithVisibility::separable, SmithVisibility::separable_schlick, SmithVisibility::height_correlated};
-
 constexpr double tolerance = 1e-6;
 
 DfgEntry entry(double n_dot_v, double alpha, SmithVisibility visibility) {
@@ -43,7 +40,7 @@ void check_against_monte_carlo(double n_dot_v, double alpha, SmithVisibility vis
 }  // namespace
 
 TEST_CASE("alpha = 0 is the mirror limit in closed form") {
-  for (SmithVisibility visibility : all_visibilities) {
+  for (SmithVisibility visibility : all_smith_visibilities) {
     for (double mu : {0.0, 0.3, 1.0}) {
       const DfgEntry mirror = entry(mu, 0.0, visibility);
       const double fresnel = std::pow(1.0 - mu, 5.0);
@@ -56,7 +53,7 @@ TEST_CASE("alpha = 0 is the mirror limit in closed form") {
 }
 
 TEST_CASE("Split-sum terms converge and conserve energy: scale + bias <= 1") {
-  for (SmithVisibility visibility : all_visibilities) {
+  for (SmithVisibility visibility : all_smith_visibilities) {
     for (double mu : {0.0, 0.01, 0.1, 0.3, 0.5, 0.7, 0.9, 1.0}) {
       for (double alpha : {1e-3, 0.01, 0.1, 0.3, 0.6, 1.0}) {
         const DfgEntry e = entry(mu, alpha, visibility);
@@ -72,7 +69,7 @@ TEST_CASE("Split-sum terms converge and conserve energy: scale + bias <= 1") {
 }
 
 TEST_CASE("scale + bias tends to 1 as the roughness vanishes") {
-  for (SmithVisibility visibility : all_visibilities) {
+  for (SmithVisibility visibility : all_smith_visibilities) {
     for (double mu : {0.1, 0.4, 0.8, 1.0}) {
       const DfgEntry e = entry(mu, 1e-4, visibility);
       CAPTURE(static_cast<int>(visibility), mu, e.scale, e.bias);
@@ -83,7 +80,7 @@ TEST_CASE("scale + bias tends to 1 as the roughness vanishes") {
 }
 
 TEST_CASE("The grazing view mu = 0 is the finite limit of mu -> 0") {
-  for (SmithVisibility visibility : all_visibilities) {
+  for (SmithVisibility visibility : all_smith_visibilities) {
     for (double alpha : {0.05, 0.5, 1.0}) {
       const DfgEntry at_zero = entry(0.0, alpha, visibility);
       const DfgEntry near_zero = entry(1e-7, alpha, visibility);
@@ -104,14 +101,14 @@ TEST_CASE("Split-sum terms agree with independent Monte Carlo estimates") {
   // Half-vector sampling (h ~ D(h)(n.h) over the full azimuth circle) at cells spread over mu and alpha.
   constexpr std::array<Cell, 5> cells = {{{0.05, 0.3}, {0.25, 0.02}, {0.5, 0.6}, {0.8, 0.1}, {0.97, 1.0}}};
   std::uint64_t item = 0;
-  for (SmithVisibility visibility : all_visibilities) {
+  for (SmithVisibility visibility : all_smith_visibilities) {
     for (const Cell& cell : cells) {
       check_against_monte_carlo(cell.n_dot_v, cell.alpha, visibility, LightSampling::ggx_half_vector, item++);
     }
   }
   // Uniform light sampling (no microfacet importance at all) on rough cells, including the grazing view.
   constexpr std::array<Cell, 2> rough_cells = {{{0.0, 0.5}, {0.35, 0.8}}};
-  for (SmithVisibility visibility : all_visibilities) {
+  for (SmithVisibility visibility : all_smith_visibilities) {
     for (const Cell& cell : rough_cells) {
       check_against_monte_carlo(cell.n_dot_v, cell.alpha, visibility, LightSampling::uniform_hemisphere, item++);
     }
