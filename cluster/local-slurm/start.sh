@@ -9,7 +9,7 @@
 # On success stdout carries only shell lines to eval/source:
 #   export SLURM_CONF=STATE_DIR/slurm.conf
 #   export LOCAL_SLURM_STATE_DIR=STATE_DIR
-# Progress and errors go to stderr. Exit codes: 0 up, 77 Slurm/munge not installed, 1 failure
+# Progress and errors go to stderr. Exit codes: 0 up, 77 Slurm/munge not installed or not root, 1 failure
 # (the daemons started so far are stopped again).
 # Stop with: cluster/local-slurm/stop.sh STATE_DIR [--clean]
 #
@@ -34,6 +34,11 @@ for bin in slurmctld slurmd munged munge sinfo srun sbatch scontrol squeue scanc
   fi
 done
 PATH=$PATH:/usr/sbin
+# slurmd launches job steps as their owners and slurmstepd needs root for that; only root is tested.
+if [[ $(id -u) -ne 0 ]]; then
+  echo "local Slurm unavailable: it must be started as root (slurmd runs job steps as their owners)" >&2
+  exit 77
+fi
 
 kill_wait=${LOCAL_SLURM_KILL_WAIT:-10}
 cred_expire=${LOCAL_SLURM_CRED_EXPIRE:-10}
