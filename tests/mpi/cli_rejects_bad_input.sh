@@ -46,4 +46,22 @@ set +e
 set -e
 expect_status 2
 ! grep -qi "terminate\|abort\|stack" err.txt || fail "usage errors crash"
+note "submit: bad jobs are refused before Slurm is asked; --dry-run renders one script per job"
+set +e
+"$PBRFIT" submit bad.yaml --dry-run 2>err.txt; STATUS=$?
+set -e
+expect_status 2
+[[ "$(cat err.txt)" == "$expected" ]] || { cat err.txt; fail "submit: wrong message"; }
+cp "$PBRFIT_SOURCE_DIR/tests/jobs/small-dfg.yaml" a.yaml
+cp "$PBRFIT_SOURCE_DIR/tests/jobs/resume-dfg.yaml" b.yaml
+"$PBRFIT" submit a.yaml b.yaml --dry-run --ranks 4 --time 30 > scripts.txt
+[[ $(grep -c "^#SBATCH --requeue" scripts.txt) -eq 2 ]] || fail "submit --dry-run did not render two scripts"
+[[ $(grep -c "^#SBATCH --ntasks=4" scripts.txt) -eq 2 ]] || fail "--ranks did not override the job's ranks"
+grep -q "^srun --mpi=pmix '.*/pbrfit' run '$WORK/a.yaml' --output '$WORK/result.h5' --resume$" scripts.txt ||
+  { cat scripts.txt; fail "the script does not run the job with --resume"; }
+set +e
+"$PBRFIT" submit a.yaml --dry-run --time "soon" 2>err.txt; STATUS=$?
+set -e
+expect_status 2
+grep -q "^--time: error: 'soon' is not a Slurm time limit" err.txt || { cat err.txt; fail "submit accepted a bad --time"; }
 echo "PASS"
