@@ -32,12 +32,13 @@ Coordinator::Coordinator(const MpiSession& mpi, const Workload& workload, const 
       local_(workload),
       remote_outstanding_(std::size_t(mpi.size()), 0),
       total_items_(workload.total_items()),
-      done_at_start_(checkpoint_.results.size()) {
+      done_at_start_(checkpoint_.results.size()),
+      elapsed_before_(checkpoint_.elapsed_seconds) {
   for (const auto& [id, result] : checkpoint_.results) file_.add(workload_.blocks(id, result));
 }
 
 double Coordinator::elapsed() const {
-  return checkpoint_.elapsed_seconds + std::chrono::duration<double>(Clock::now() - started_).count();
+  return elapsed_before_ + std::chrono::duration<double>(Clock::now() - started_).count();
 }
 
 std::size_t Coordinator::outstanding() const {
@@ -51,6 +52,7 @@ store::Progress Coordinator::progress(const std::string& state) const {
   p.state = state;
   p.items_done = checkpoint_.results.size();
   p.items_total = total_items_;
+  p.elapsed_seconds = elapsed();
   p.headline = workload_.headline(checkpoint_.results);
   if (state != "running") p.finished_utc = store::utc_now_iso8601();
   return p;
@@ -83,8 +85,7 @@ Outcome Coordinator::run() {
 void Coordinator::finish(Outcome outcome) {
   const char* state = outcome == Outcome::complete ? "complete" : outcome == Outcome::failed ? "failed" : "interrupted";
   if (outcome != Outcome::complete) write_checkpoint();
-  auto final_progress = progress(state);
-  final_progress.elapsed_seconds = elapsed();
+  const auto final_progress = progress(state);
   file_.flush(final_progress);
   if (outcome != Outcome::complete) return;
   std::remove(store::checkpoint_path_for(settings_.output).c_str());
@@ -118,7 +119,7 @@ void Coordinator::run_stage(std::uint32_t stage) {
     const bool busy = poll();
     try {
       maybe_checkpoint();
-      maybe_flush(false);
+      maybe_flush();
     } catch (const RunError& e) {
       failure_ = e.what();
     }
@@ -202,10 +203,8 @@ void Coordinator::stop_all_workers() {
 
 void Coordinator::write_checkpoint() {
   checkpoint_.job_text = settings_.job_text;
-  const double saved = checkpoint_.elapsed_seconds;
   checkpoint_.elapsed_seconds = elapsed();
   store::write_checkpoint(store::checkpoint_path_for(settings_.output), checkpoint_);
-  checkpoint_.elapsed_seconds = saved;
   done_since_checkpoint_ = 0;
   last_checkpoint_ = Clock::now();
   spdlog::debug("checkpoint written: {} of {} items", checkpoint_.results.size(), total_items_);
@@ -219,12 +218,10 @@ void Coordinator::maybe_checkpoint() {
   if ((by_time || by_items) && done_since_checkpoint_ > 0) write_checkpoint();
 }
 
-void Coordinator::maybe_flush(bool force) {
+void Coordinator::maybe_flush() {
   const double since = std::chrono::duration<double>(Clock::now() - last_flush_).count();
-  if (!force && since < settings_.flush_interval_seconds) return;
-  auto p = progress("running");
-  p.elapsed_seconds = elapsed();
-  file_.flush(p);
+  if (since < settings_.flush_interval_seconds) return;
+  file_.flush(progress("running"));
   last_flush_ = Clock::now();
 }
 

@@ -36,7 +36,7 @@ class Coordinator {
   void accept(WorkItemId id, Bytes result);
   void stop_all_workers();
   void maybe_checkpoint();
-  void maybe_flush(bool force);
+  void maybe_flush();
   void maybe_log_progress();
   void write_checkpoint();
   store::Progress progress(const std::string& state) const;
@@ -53,6 +53,7 @@ class Coordinator {
   Bytes context_;
   std::uint64_t total_items_ = 0;
   std::uint64_t done_at_start_ = 0;
+  double elapsed_before_ = 0.0;  // compute time of the runs this one resumes
   std::uint64_t done_since_checkpoint_ = 0;
   Clock::time_point started_ = Clock::now();
   Clock::time_point last_checkpoint_ = started_, last_flush_ = started_, last_progress_ = started_;
