@@ -56,7 +56,8 @@ std::string joined(const std::vector<std::string>& names) {
   return out;
 }
 
-// The first dimension starts empty and grows as rows arrive; missing values read as NaN.
+// The first dimension starts empty and grows as rows arrive; missing values read as NaN. Every
+// dimension carries its axis as a dimension scale and its name as a label.
 void create_table(hid_t group, const Group& layout, const Table& table) {
   const std::size_t rank = table.axes.size();
   std::vector<hsize_t> dims(rank), max_dims(rank), chunk(rank);
@@ -79,6 +80,7 @@ void create_table(hid_t group, const Group& layout, const Table& table) {
   for (std::size_t d = 0; d < rank; ++d) {
     Handle axis(check(H5Dopen2(group, table.axes[d].c_str(), H5P_DEFAULT), "open axis " + table.axes[d]), H5Dclose);
     check(H5DSattach_scale(data, axis, unsigned(d)), "attach axis " + table.axes[d]);
+    check(H5DSset_label(data, unsigned(d), table.axes[d].c_str()), "label dimension " + table.axes[d]);
   }
   h5::write_string_attribute(data, "description", table.description);
   h5::write_string_attribute(data, "axes", joined(table.axes));
