@@ -1,8 +1,9 @@
 # The two commands of the README. Both install what is missing (Debian 12 packages), then build.
 BUILD ?= build
 MPIRUN ?= mpirun
-# Root needs OpenMPI's explicit consent; --oversubscribe lets 2 ranks run on a 1-core machine.
-MPIRUN_FLAGS ?= $(if $(filter 0,$(shell id -u)),--allow-run-as-root,) --oversubscribe
+# Root needs OpenMPI's explicit consent; --oversubscribe lets 2 ranks run on a 1-core machine; shared
+# memory only (no probing for network transports) saves about 0.2 s of start-up on one machine.
+MPIRUN_FLAGS ?= $(if $(filter 0,$(shell id -u)),--allow-run-as-root,) --oversubscribe --mca pml ob1 --mca btl self,vader
 
 .PHONY: demo test build deps bench clean
 

@@ -5,7 +5,7 @@ set -euo pipefail
 : "${PBRFIT:?PBRFIT must name the pbrfit binary}"
 : "${PBRFIT_SOURCE_DIR:?}"
 MPIEXEC=${MPIEXEC:-mpirun}
-MPI_FLAGS=(--oversubscribe)
+MPI_FLAGS=(--oversubscribe --mca pml ob1 --mca btl self,vader)
 [[ $(id -u) -eq 0 ]] && MPI_FLAGS+=(--allow-run-as-root)
 H5PY_PYTHON=/usr/bin/python3   # Debian's h5py is installed for the system interpreter
 
