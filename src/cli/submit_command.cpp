@@ -2,8 +2,6 @@
 
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include "exit_on_error.hpp"
 #include "pbrfit/cli/commands.hpp"
@@ -19,11 +17,8 @@ namespace pbrfit::cli {
 namespace {
 
 std::string read_text(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError({path}, "cannot read the batch script template");
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
+  const Bytes bytes = store::read_whole_file(path);
+  return {reinterpret_cast<const char*>(bytes.data()), bytes.size()};
 }
 
 submit::ResourceOverrides overrides_of(const SubmitOptions& options) {
