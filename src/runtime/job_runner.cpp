@@ -58,23 +58,30 @@ std::optional<store::Checkpoint> usable_checkpoint(const RunSettings& s) {
   return checkpoint;
 }
 
-bool result_is_complete_and_ours(const RunSettings& s, bool have_checkpoint) {
-  if (!std::filesystem::exists(s.output)) return false;
+// The summary of an existing result file; nullopt when there is none or it cannot be read (a run killed
+// while flushing can leave it so; its checkpoint, if any, rebuilds it).
+std::optional<store::ResultSummary> existing_result(const RunSettings& s, bool have_checkpoint) {
+  if (!std::filesystem::exists(s.output)) return std::nullopt;
   try {
-    const auto summary = store::read_result_summary(s.output);
-    if (summary.job_yaml != s.job_text) {
-      if (!s.force)
-        throw InputError({s.output}, "holds the result of a different job text (job '" + summary.job_name +
-                                         "'); use --force to overwrite it or --output to write elsewhere");
-      spdlog::warn("--force: overwriting the result of a different job text: {}", s.output);
-      return false;
-    }
-    return summary.state == "complete";
-  } catch (const InputError& e) {
-    if (have_checkpoint || s.force) return false;
-    if (e.message().rfind("holds the result", 0) == 0) throw;
+    return store::read_result_summary(s.output);
+  } catch (const InputError&) {
+    if (have_checkpoint || s.force) return std::nullopt;
     throw InputError({s.output}, "exists but is not a readable pbrfit result; use --force to overwrite it");
   }
+}
+
+// Whether the output already holds this job's complete result; refuses another job text's result.
+bool result_is_complete(const RunSettings& s, bool have_checkpoint) {
+  const auto summary = existing_result(s, have_checkpoint);
+  if (!summary) return false;
+  if (summary->job_yaml != s.job_text) {
+    if (!s.force)
+      throw InputError({s.output}, "holds the result of a different job text (job '" + summary->job_name +
+                                       "'); use --force to overwrite it or --output to write elsewhere");
+    spdlog::warn("--force: overwriting the result of a different job text: {}", s.output);
+    return false;
+  }
+  return summary->state == "complete";
 }
 
 std::string scheduler_job() {
@@ -87,7 +94,7 @@ std::string scheduler_job() {
 Preparation prepare(const MpiSession& mpi, const Workload& workload, const RunSettings& s) {
   Preparation p;
   auto checkpoint = usable_checkpoint(s);
-  if (result_is_complete_and_ours(s, checkpoint.has_value()) && s.resume && !checkpoint) {
+  if (result_is_complete(s, checkpoint.has_value()) && s.resume && !checkpoint) {
     spdlog::info("{} is already complete; nothing to do", s.output);
     p.code = already_complete;
     return p;

@@ -46,4 +46,14 @@ job_from tests/jobs/small-dfg.yaml small.yaml
 run_ranks 1 run small.yaml --force -q
 expect_status 0
 h5dump -a /job_name result.h5 | grep -q small-dfg || fail "--force did not overwrite"
+
+note "a damaged result file without a checkpoint is not overwritten without --force"
+echo "not HDF5" > result.h5
+run_ranks 1 run small.yaml 2>err.txt
+expect_status 2
+grep -q "result.h5: error: exists but is not a readable pbrfit result; use --force to overwrite it" err.txt ||
+  { cat err.txt; fail "wrong message for a damaged result file"; }
+grep -q "not HDF5" result.h5 || fail "the refused run touched the damaged file"
+run_ranks 1 run small.yaml --force -q
+expect_status 0
 echo "PASS"
