@@ -41,9 +41,7 @@ bool process_is_gone(std::int64_t pid) {
 }
 
 bool writer_is_gone(const store::ResultSummary& s) {
-  char host[256] = {};
-  gethostname(host, sizeof host - 1);
-  if (s.writer_host != host || s.writer_pid <= 0) return false;  // cannot tell from here
+  if (s.writer_host != store::host_name() || s.writer_pid <= 0) return false;  // cannot tell from here
   return process_is_gone(s.writer_pid);
 }
 

@@ -28,13 +28,13 @@ std::string utc_now_iso8601() {
   return buffer;
 }
 
-namespace {
-
 std::string host_name() {
   char buffer[256] = {};
   gethostname(buffer, sizeof buffer - 1);
   return buffer;
 }
+
+namespace {
 
 Handle create_axis(hid_t group, const Axis& axis) {
   const hsize_t n = axis.values.size();

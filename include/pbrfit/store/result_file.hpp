@@ -67,5 +67,7 @@ std::vector<double> read_table(const std::string& path, const std::string& datas
                                std::vector<std::uint64_t>* dims = nullptr);
 
 std::string utc_now_iso8601();
+// This machine's name, as recorded in writer_host.
+std::string host_name();
 
 }  // namespace pbrfit::store
