@@ -20,6 +20,10 @@ int main_entry(int argc, char** argv) {
   run_cmd->add_option("-o,--output", run.output, "result file, instead of the job's output");
   run_cmd->add_flag("--resume", run.resume, "continue from the job's checkpoint, if there is one");
   run_cmd->add_flag("--force", run.force, "overwrite a result or checkpoint of a different job text");
+  run_cmd->add_option("-t,--threads", run.threads,
+                      "compute threads per rank (default: SLURM_CPUS_PER_TASK, else the machine's hardware threads "
+                      "shared among the ranks on it)")
+      ->check(CLI::Range(1, 4096));
   auto* quiet_flag = run_cmd->add_flag("-q,--quiet", quiet, "log warnings and errors only");
   run_cmd->add_flag("-v,--verbose", verbose, "log details, from every rank")->excludes(quiet_flag);
 

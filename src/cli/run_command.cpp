@@ -6,6 +6,7 @@
 #include "pbrfit/cli/commands.hpp"
 #include "pbrfit/core/error.hpp"
 #include "pbrfit/jobs/job_kinds.hpp"
+#include "pbrfit/runtime/compute_threads.hpp"
 #include "pbrfit/runtime/job_runner.hpp"
 #include "pbrfit/runtime/mpi_session.hpp"
 
@@ -13,8 +14,9 @@ namespace pbrfit::cli {
 
 namespace {
 
-runtime::RunSettings settings_for(const spec::JobSpec& job, const RunOptions& options) {
+runtime::RunSettings settings_for(const spec::JobSpec& job, const RunOptions& options, int ranks_on_node) {
   runtime::RunSettings s;
+  s.threads = runtime::compute_threads(options.threads, ranks_on_node);
   s.job_text = job.text;
   s.job_name = job.name;
   s.job_kind = job.kind;
@@ -30,10 +32,16 @@ runtime::RunSettings settings_for(const spec::JobSpec& job, const RunOptions& op
 int run_validated(const spec::JobSpec& job, const runtime::Workload& workload, const RunOptions& options) {
   runtime::MpiSession mpi;
   runtime::setup_logging(mpi.rank(), options.verbosity);
-  const auto settings = settings_for(job, options);
+  const auto settings = settings_for(job, options, mpi.ranks_on_this_node());
+  if (settings.threads > runtime::usable_cpus())
+    spdlog::warn("{} compute threads share {} CPU{} on rank {} (mpirun binds each rank to one core unless run with "
+                 "--bind-to none or --map-by slot:PE={})",
+                 settings.threads, runtime::usable_cpus(), runtime::usable_cpus() == 1 ? "" : "s", mpi.rank(),
+                 settings.threads);
   if (mpi.coordinator())
-    spdlog::info("job '{}' ({}) on {} rank{}: {} work items -> {}", job.name, job.kind, mpi.size(),
-                 mpi.size() == 1 ? "" : "s", workload.total_items(), settings.output);
+    spdlog::info("job '{}' ({}) on {} rank{} x {} thread{}: {} work items -> {}", job.name, job.kind, mpi.size(),
+                 mpi.size() == 1 ? "" : "s", settings.threads, settings.threads == 1 ? "" : "s", workload.total_items(),
+                 settings.output);
   return runtime::run_workload(mpi, workload, settings);
 }
 

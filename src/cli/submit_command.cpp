@@ -17,7 +17,7 @@ namespace pbrfit::cli {
 namespace {
 
 std::string read_text(const std::string& path) {
-  const Bytes bytes = store::read_whole_file(path);
+  const Bytes bytes = store::read_whole_file(path, std::uint64_t(1) << 20);
   return {reinterpret_cast<const char*>(bytes.data()), bytes.size()};
 }
 

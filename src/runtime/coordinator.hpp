@@ -1,19 +1,25 @@
 #pragma once
-// Rank 0's side of a run: hands out work items (up to two outstanding per rank, so no rank waits
-// on the coordinator), collects results, streams them to the result file, writes checkpoints and logs
-// progress. Stops early on a signal or a failure anywhere, always leaving a consistent checkpoint.
+// Rank 0's side of a run. Per stage it builds the stage context from complete earlier stages, relays it
+// down the tree, and hands out items with their inputs to its own compute threads and to the other ranks
+// (a few per thread, so no thread waits for the coordinator). It collects results into the run state,
+// streams them to the result file, checkpoints and logs progress. On a signal or a failure anywhere it
+// stops handing out work, collects what is in flight for a bounded time, and always leaves a checkpoint.
 #include <chrono>
 #include <cstdint>
 #include <deque>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "local_worker.hpp"
+#include "checkpointer.hpp"
+#include "compute_pool.hpp"
+#include "dispatch_depth.hpp"
+#include "idle_backoff.hpp"
 #include "messages.hpp"
 #include "pbrfit/runtime/job_runner.hpp"
-#include "pbrfit/store/checkpoint_file.hpp"
 #include "pbrfit/store/result_file.hpp"
+#include "run_state.hpp"
 
 namespace pbrfit::runtime {
 
@@ -21,40 +27,50 @@ enum class Outcome { complete, interrupted, failed };
 
 class Coordinator {
  public:
-  Coordinator(const MpiSession& mpi, const Workload& workload, const RunSettings& settings,
-              store::Checkpoint resumed, store::ResultFile& file);
+  Coordinator(const MpiSession& mpi, const Workload& workload, const RunSettings& settings, RunState& state,
+              Checkpointer& checkpointer, store::ResultFile& file, std::vector<int> threads, double elapsed_before);
   Outcome run();
+  // Tells every rank that said bye its exit code (the other ranks are gone or hung).
+  void say_farewell(int code);
 
  private:
   using Clock = std::chrono::steady_clock;
 
-  void run_stage(std::uint32_t stage);
-  void finish(Outcome outcome);
-  void dispatch(std::deque<std::uint64_t>& todo, std::uint32_t stage);
+  void begin_stage();
+  void run_stage();
+  bool stopping() const { return failure_ || interrupted_; }
+  void check_stop_signal();
+  void dispatch();
   bool poll();  // true when something arrived
   void handle(Message& message);
   void accept(WorkItemId id, Bytes result);
-  void stop_all_workers();
+  void stop_workers();
+  void finish(Outcome outcome);
+  void save_checkpoint();
   void maybe_checkpoint();
   void maybe_flush();
+  void flush(const std::string& state);
   void maybe_log_progress();
-  void write_checkpoint();
   store::Progress progress(const std::string& state) const;
   double elapsed() const;
-  std::size_t outstanding() const;
 
   const MpiSession& mpi_;
   const Workload& workload_;
   const RunSettings& settings_;
+  RunState& state_;
+  Checkpointer& checkpointer_;
   store::ResultFile& file_;
-  store::Checkpoint checkpoint_;  // results so far; written as is
-  LocalWorker local_;
-  std::vector<std::size_t> remote_outstanding_;  // by rank; [0] unused
-  Bytes context_;
-  std::uint64_t total_items_ = 0;
-  std::uint64_t done_at_start_ = 0;
-  double elapsed_before_ = 0.0;  // compute time of the runs this one resumes
-  std::uint64_t done_since_checkpoint_ = 0;
+  const std::vector<int> threads_;  // compute threads by rank
+  DispatchDepth depth_;
+  Outbox outbox_;
+  IdleBackoff backoff_;
+  ComputePool pool_;
+  std::shared_ptr<const Bytes> context_;
+  std::deque<std::uint64_t> todo_;
+  std::vector<std::size_t> sent_;   // items out at each remote rank; [0] unused
+  std::vector<bool> said_bye_;
+  std::uint64_t items_total_ = 0, done_at_start_ = 0, done_since_checkpoint_ = 0;
+  double elapsed_before_ = 0.0;
   Clock::time_point started_ = Clock::now();
   Clock::time_point last_checkpoint_ = started_, last_flush_ = started_, last_progress_ = started_;
   std::optional<std::string> failure_;

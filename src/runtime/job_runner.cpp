@@ -8,10 +8,14 @@
 #include <memory>
 #include <optional>
 
+#include "checkpointer.hpp"
 #include "coordinator.hpp"
+#include "existing_output.hpp"
 #include "pbrfit/core/error.hpp"
 #include "pbrfit/runtime/stop_signal.hpp"
+#include "pbrfit/store/block_journal.hpp"
 #include "remote_worker.hpp"
+#include "resumption.hpp"
 
 namespace pbrfit::runtime {
 
@@ -20,69 +24,15 @@ namespace {
 constexpr int already_complete = -1;
 constexpr int proceed = -2;
 
-// What rank 0 decided before any work: go on (with what was resumed), or end with an exit code.
+// What rank 0 has ready before any work: the files and the state to start from, or an exit code.
 struct Preparation {
   int code = proceed;
-  store::Checkpoint resumed;
-  std::unique_ptr<store::ResultFile> file;
+  std::unique_ptr<store::BlockCodec> codec = {};
+  std::unique_ptr<RunState> state = {};
+  std::unique_ptr<store::ResultFile> file = {};
+  std::optional<Checkpointer> checkpointer = {};
+  double elapsed_before = 0.0;
 };
-
-std::optional<store::Checkpoint> existing_checkpoint(const RunSettings& s) {
-  const auto path = store::checkpoint_path_for(s.output);
-  if (!std::filesystem::exists(path)) return std::nullopt;
-  if (s.resume) return store::read_checkpoint(path);
-  try {
-    return store::read_checkpoint(path);
-  } catch (const InputError& e) {
-    spdlog::warn("ignoring an unreadable checkpoint (not resuming): {}", e.what());
-    return std::nullopt;
-  }
-}
-
-// Refuses to touch a checkpoint or result that belongs to a different job text, unless forced.
-std::optional<store::Checkpoint> usable_checkpoint(const RunSettings& s) {
-  auto checkpoint = existing_checkpoint(s);
-  if (!checkpoint) return std::nullopt;
-  const auto path = store::checkpoint_path_for(s.output);
-  if (checkpoint->job_text != s.job_text) {
-    if (!s.force)
-      throw InputError({path}, "this checkpoint was written by a different job text; run the job file it came "
-                               "from, or use --force to discard it");
-    spdlog::warn("--force: discarding the checkpoint of a different job text: {}", path);
-    return std::nullopt;
-  }
-  if (!s.resume) {
-    spdlog::warn("starting over: the existing checkpoint is discarded (use --resume to continue from it)");
-    return std::nullopt;
-  }
-  return checkpoint;
-}
-
-// The summary of an existing result file; nullopt when there is none or it cannot be read (a run killed
-// while flushing can leave it so; its checkpoint, if any, rebuilds it).
-std::optional<store::ResultSummary> existing_result(const RunSettings& s, bool have_checkpoint) {
-  if (!std::filesystem::exists(s.output)) return std::nullopt;
-  try {
-    return store::read_result_summary(s.output);
-  } catch (const InputError&) {
-    if (have_checkpoint || s.force) return std::nullopt;
-    throw InputError({s.output}, "exists but is not a readable pbrfit result; use --force to overwrite it");
-  }
-}
-
-// Whether the output already holds this job's complete result; refuses another job text's result.
-bool result_is_complete(const RunSettings& s, bool have_checkpoint) {
-  const auto summary = existing_result(s, have_checkpoint);
-  if (!summary) return false;
-  if (summary->job_yaml != s.job_text) {
-    if (!s.force)
-      throw InputError({s.output}, "holds the result of a different job text (job '" + summary->job_name +
-                                       "'); use --force to overwrite it or --output to write elsewhere");
-    spdlog::warn("--force: overwriting the result of a different job text: {}", s.output);
-    return false;
-  }
-  return summary->state == "complete";
-}
 
 std::string scheduler_job() {
   const char* id = std::getenv("SLURM_JOB_ID");
@@ -91,22 +41,51 @@ std::string scheduler_job() {
   return std::string("slurm job ") + id + ", restart " + (restart ? restart : "0");
 }
 
+std::unique_ptr<store::ResultFile> create_result_file(const MpiSession& mpi, const Workload& workload,
+                                                      const RunSettings& s) {
+  const auto parent = std::filesystem::path(s.output).parent_path();
+  if (!parent.empty()) std::filesystem::create_directories(parent);
+  store::RunInfo info{s.job_name, s.job_kind, s.job_text, s.seed, mpi.size(), s.threads, store::utc_now_iso8601(),
+                      scheduler_job()};
+  return std::make_unique<store::ResultFile>(s.output, workload.layout(), info);
+}
+
+// Everything is checked (checkpoint and journal in full) before the result file is replaced.
+void resume_from(Preparation& p, store::CheckpointReading checkpoint, const MpiSession& mpi,
+                 const Workload& workload, const RunSettings& s) {
+  const auto journal = store::journal_path_for(s.output);
+  check_checkpoint(store::checkpoint_path_for(s.output), checkpoint.state, workload, *p.codec);
+  store::replay_block_journal(journal, s.job_text, *p.codec, checkpoint.state.journal_length, [](store::Block) {});
+  if (checkpoint.torn_tail) spdlog::warn("the last checkpoint was cut short; continuing from the one before it");
+  const std::uint64_t journal_length = checkpoint.state.journal_length;
+  p.elapsed_before = checkpoint.state.elapsed_seconds;
+  p.state = std::make_unique<RunState>(workload, *p.codec, std::move(checkpoint.state));
+  p.file = create_result_file(mpi, workload, s);
+  store::Progress progress{"running", p.state->items_done(), workload.total_items(), p.elapsed_before,
+                           workload.headline(p.state->summary()), ""};
+  rebuild_result_file(*p.file, journal, s.job_text, *p.codec, journal_length, progress);
+  p.checkpointer = Checkpointer::resume(s.output, s.job_text, journal_length, checkpoint.valid_length);
+}
+
 Preparation prepare(const MpiSession& mpi, const Workload& workload, const RunSettings& s) {
   Preparation p;
-  auto checkpoint = usable_checkpoint(s);
-  if (result_is_complete(s, checkpoint.has_value()) && s.resume && !checkpoint) {
+  auto existing = inspect_existing_output(s);
+  if (existing.complete) {
     spdlog::info("{} is already complete; nothing to do", s.output);
     p.code = already_complete;
     return p;
   }
-  if (checkpoint) p.resumed = std::move(*checkpoint);
-  if (s.resume && p.resumed.results.empty()) spdlog::info("no checkpoint to resume from: starting from the beginning");
-  p.resumed.job_text = s.job_text;
-  const auto parent = std::filesystem::path(s.output).parent_path();
-  if (!parent.empty()) std::filesystem::create_directories(parent);
-  store::RunInfo info{s.job_name, s.job_kind, s.job_text, s.seed, mpi.size(), store::utc_now_iso8601(),
-                      scheduler_job()};
-  p.file = std::make_unique<store::ResultFile>(s.output, workload.layout(), info);
+  p.codec = std::make_unique<store::BlockCodec>(workload.layout());
+  if (existing.checkpoint) {
+    resume_from(p, std::move(*existing.checkpoint), mpi, workload, s);
+    return p;
+  }
+  if (s.resume) spdlog::info("no checkpoint to resume from: starting from the beginning");
+  if (existing.discards_checkpoint)
+    spdlog::warn("starting over: the existing checkpoint is discarded (use --resume to continue from it)");
+  p.state = std::make_unique<RunState>(workload, *p.codec);
+  p.file = create_result_file(mpi, workload, s);
+  p.checkpointer = Checkpointer::start(s.output, s.job_text, *p.state);
   return p;
 }
 
@@ -118,14 +97,29 @@ int exit_code_of(Outcome outcome) {
   }
 }
 
-int coordinate(const MpiSession& mpi, const Workload& workload, const RunSettings& s, Preparation& p) {
-  Coordinator coordinator(mpi, workload, s, std::move(p.resumed), *p.file);
+int coordinate(const MpiSession& mpi, const Workload& workload, const RunSettings& s, Preparation& p,
+               std::vector<int> threads) {
+  Coordinator coordinator(mpi, workload, s, *p.state, *p.checkpointer, *p.file, std::move(threads), p.elapsed_before);
   const Outcome outcome = coordinator.run();
-  const auto checkpoint = store::checkpoint_path_for(s.output);
   if (outcome == Outcome::interrupted)
-    spdlog::warn("interrupted: checkpoint saved to {}; continue with: pbrfit run <job> --resume", checkpoint);
+    spdlog::warn("interrupted: checkpoint saved to {}; continue with: pbrfit run <job> --resume",
+                 store::checkpoint_path_for(s.output));
   if (outcome == Outcome::complete) spdlog::info("result: {}", s.output);
-  return exit_code_of(outcome);
+  const int code = exit_code_of(outcome);
+  coordinator.say_farewell(code);
+  return code;
+}
+
+Preparation prepare_reporting(const MpiSession& mpi, const Workload& workload, const RunSettings& settings) {
+  try {
+    return prepare(mpi, workload, settings);
+  } catch (const InputError& e) {
+    std::fprintf(stderr, "%s\n", e.what());
+    return Preparation{exit_invalid_input};
+  } catch (const std::exception& e) {
+    spdlog::error("cannot start the job: {}", e.what());
+    return Preparation{exit_run_failure};
+  }
 }
 
 }  // namespace
@@ -133,28 +127,13 @@ int coordinate(const MpiSession& mpi, const Workload& workload, const RunSetting
 int run_workload(const MpiSession& mpi, const Workload& workload, const RunSettings& settings) {
   install_stop_handlers();
   Preparation preparation;
-  if (mpi.coordinator()) {
-    try {
-      preparation = prepare(mpi, workload, settings);
-    } catch (const InputError& e) {
-      std::fprintf(stderr, "%s\n", e.what());
-      preparation.code = exit_invalid_input;
-    } catch (const std::exception& e) {
-      spdlog::error("cannot start the job: {}", e.what());
-      preparation.code = exit_run_failure;
-    }
-  }
+  if (mpi.coordinator()) preparation = prepare_reporting(mpi, workload, settings);
   const int decision = mpi.broadcast_from_coordinator(preparation.code);
   if (decision == already_complete) return exit_success;
   if (decision != proceed) return decision;
-
-  int code = exit_success;
-  if (mpi.coordinator()) {
-    code = coordinate(mpi, workload, settings, preparation);
-  } else {
-    serve_as_worker(workload);
-  }
-  return mpi.broadcast_from_coordinator(code);
+  std::vector<int> threads = mpi.gather_to_coordinator(settings.threads);
+  if (mpi.coordinator()) return coordinate(mpi, workload, settings, preparation, std::move(threads));
+  return serve_as_worker(mpi, workload, settings.seed, settings.threads);
 }
 
 }  // namespace pbrfit::runtime

@@ -1,15 +1,43 @@
 #include "messages.hpp"
 
-#include <chrono>
 #include <thread>
 
 #include "pbrfit/core/error.hpp"
 
 namespace pbrfit::runtime {
 
-void send(int destination, Tag tag, const Bytes& payload) {
-  if (MPI_Send(payload.data(), int(payload.size()), MPI_BYTE, destination, int(tag), MPI_COMM_WORLD) != MPI_SUCCESS)
+Outbox::~Outbox() { drain(std::chrono::milliseconds(2000)); }
+
+void Outbox::send(int destination, Tag tag, std::shared_ptr<const Bytes> payload) {
+  if (payload->size() > std::size_t(std::numeric_limits<int>::max()))
+    throw RunError("a message of " + std::to_string(payload->size()) + " bytes is too large for MPI");
+  in_flight_.push_back({MPI_REQUEST_NULL, std::move(payload)});
+  auto& sent = in_flight_.back();
+  if (MPI_Isend(sent.payload->data(), int(sent.payload->size()), MPI_BYTE, destination, int(tag), MPI_COMM_WORLD,
+                &sent.request) != MPI_SUCCESS)
     throw RunError("MPI send to rank " + std::to_string(destination) + " failed");
+}
+
+void Outbox::send(int destination, Tag tag, Bytes payload) {
+  send(destination, tag, std::make_shared<const Bytes>(std::move(payload)));
+}
+
+void Outbox::progress() {
+  for (auto it = in_flight_.begin(); it != in_flight_.end();) {
+    int done = 0;
+    MPI_Test(&it->request, &done, MPI_STATUS_IGNORE);
+    it = done ? in_flight_.erase(it) : std::next(it);
+  }
+}
+
+bool Outbox::drain(std::chrono::milliseconds timeout) {
+  const auto deadline = std::chrono::steady_clock::now() + timeout;
+  for (;;) {
+    progress();
+    if (in_flight_.empty()) return true;
+    if (std::chrono::steady_clock::now() >= deadline) return false;
+    std::this_thread::sleep_for(std::chrono::microseconds(200));
+  }
 }
 
 std::optional<Message> try_receive() {
@@ -23,15 +51,6 @@ std::optional<Message> try_receive() {
   MPI_Recv(message.payload.data(), size, MPI_BYTE, status.MPI_SOURCE, status.MPI_TAG, MPI_COMM_WORLD,
            MPI_STATUS_IGNORE);
   return message;
-}
-
-Message receive() {
-  auto pause = std::chrono::microseconds(20);
-  for (;;) {
-    if (auto message = try_receive()) return std::move(*message);
-    std::this_thread::sleep_for(pause);
-    pause = std::min(pause * 2, std::chrono::microseconds(1000));
-  }
 }
 
 }  // namespace pbrfit::runtime

@@ -1,18 +1,27 @@
 #pragma once
 // The coordinator/worker protocol, point to point on MPI_COMM_WORLD. Private to the runtime.
-//   coordinator -> worker: stage (u32 stage, bytes context), work (u64 item), stop
-//   worker -> coordinator: result (u32 stage, u64 item, bytes), failed (text), signalled, bye
-// After `stop` a worker sends nothing but `bye`; messages from one sender arrive in order, so every
-// result a worker sent before `bye` has been received once `bye` is.
+//   stage     (u32 stage, bytes context)        rank 0 -> tree children; each rank relays it to its own
+//   work      (u32 stage, u64 item, bytes input) rank 0 -> worker
+//   stop                                         rank 0 -> worker: start nothing new, report, say bye
+//   result    (u32 stage, u64 item, bytes)       worker -> rank 0
+//   failed    (text)                             worker -> rank 0: an item threw; the worker idles
+//   signalled                                    worker -> rank 0: the worker got a stop signal
+//   bye                                          worker -> rank 0: nothing more will come
+//   farewell  (i32 exit code)                    rank 0 -> worker, after bye: exit with this code
+// Messages from one sender to one receiver arrive in order, so every result a worker sent before `bye`
+// has been received once `bye` is. Sends never block: an Outbox keeps each payload until MPI is done.
 #include <mpi.h>
 
+#include <chrono>
+#include <list>
+#include <memory>
 #include <optional>
 
 #include "pbrfit/core/bytes.hpp"
 
 namespace pbrfit::runtime {
 
-enum class Tag : int { stage = 1, work, stop, result, failed, signalled, bye };
+enum class Tag : int { stage = 1, work, stop, result, failed, signalled, bye, farewell };
 
 struct Message {
   int source = 0;
@@ -20,10 +29,29 @@ struct Message {
   Bytes payload;
 };
 
-void send(int destination, Tag tag, const Bytes& payload = {});
+class Outbox {
+ public:
+  Outbox() = default;
+  Outbox(const Outbox&) = delete;
+  Outbox& operator=(const Outbox&) = delete;
+  ~Outbox();  // waits for what is still in flight
+
+  void send(int destination, Tag tag, std::shared_ptr<const Bytes> payload);
+  void send(int destination, Tag tag, Bytes payload = {});
+  // Releases the payloads MPI has finished with.
+  void progress();
+  // Waits until everything has been sent, or `timeout` passed; true when everything was sent.
+  bool drain(std::chrono::milliseconds timeout);
+
+ private:
+  struct InFlight {
+    MPI_Request request;
+    std::shared_ptr<const Bytes> payload;
+  };
+  std::list<InFlight> in_flight_;
+};
+
 // A message from anyone if one is waiting.
 std::optional<Message> try_receive();
-// Waits for a message, sleeping briefly between polls so an idle rank leaves its core to others.
-Message receive();
 
 }  // namespace pbrfit::runtime

@@ -16,6 +16,10 @@ MpiSession::MpiSession() {
   if (provided < MPI_THREAD_FUNNELED) throw RunError("the MPI library lacks MPI_THREAD_FUNNELED support");
   MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
   MPI_Comm_size(MPI_COMM_WORLD, &size_);
+  MPI_Comm node;
+  MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, rank_, MPI_INFO_NULL, &node);
+  MPI_Comm_size(node, &local_size_);
+  MPI_Comm_free(&node);
 }
 
 MpiSession::~MpiSession() { MPI_Finalize(); }
@@ -23,6 +27,12 @@ MpiSession::~MpiSession() { MPI_Finalize(); }
 int MpiSession::broadcast_from_coordinator(int value) const {
   MPI_Bcast(&value, 1, MPI_INT, 0, MPI_COMM_WORLD);
   return value;
+}
+
+std::vector<int> MpiSession::gather_to_coordinator(int value) const {
+  std::vector<int> values(coordinator() ? std::size_t(size_) : 0);
+  MPI_Gather(&value, 1, MPI_INT, values.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
+  return values;
 }
 
 int launcher_rank() {

@@ -27,6 +27,8 @@ void install_stop_handlers() {
 
 bool stop_requested() { return received_signal.load() != 0; }
 
+void clear_stop_request() { received_signal.store(0); }
+
 const char* stop_signal_name() {
   switch (received_signal.load()) {
     case SIGTERM: return "SIGTERM";

@@ -48,13 +48,6 @@ namespace {
 
 Handle scalar_space() { return Handle(check(H5Screate(H5S_SCALAR), "create dataspace"), H5Sclose); }
 
-Handle string_type() {
-  Handle type(check(H5Tcopy(H5T_C_S1), "copy string type"), H5Tclose);
-  check(H5Tset_size(type, H5T_VARIABLE), "set string size");
-  check(H5Tset_cset(type, H5T_CSET_UTF8), "set string charset");
-  return type;
-}
-
 template <class T>
 void write_scalar_attribute(hid_t object, const std::string& name, hid_t file_type, hid_t mem_type,
                             const T& value) {
@@ -71,6 +64,13 @@ Handle open_attribute(hid_t object, const std::string& name) {
 }
 
 }  // namespace
+
+Handle string_type() {
+  Handle type(check(H5Tcopy(H5T_C_S1), "copy string type"), H5Tclose);
+  check(H5Tset_size(type, H5T_VARIABLE), "set string size");
+  check(H5Tset_cset(type, H5T_CSET_UTF8), "set string charset");
+  return type;
+}
 
 void write_string_attribute(hid_t object, const std::string& name, const std::string& value) {
   Handle type = string_type();

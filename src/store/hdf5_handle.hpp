@@ -37,6 +37,9 @@ void check(herr_t status, const std::string& what);
 Handle file_access();
 Handle open_file(const std::string& path, bool writable);
 
+// Variable-length UTF-8 strings, in files and in memory (as char*).
+Handle string_type();
+
 void write_string_attribute(hid_t object, const std::string& name, const std::string& value);
 void write_u64_attribute(hid_t object, const std::string& name, std::uint64_t value);
 void write_i64_attribute(hid_t object, const std::string& name, std::int64_t value);

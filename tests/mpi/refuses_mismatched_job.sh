@@ -20,20 +20,24 @@ grep -q "result.h5.checkpoint: error: this checkpoint was written by a different
 [[ $(grep -c "error:" err.txt) -eq 1 ]] || { cat err.txt; fail "the error is not reported exactly once"; }
 cmp -s saved.checkpoint result.h5.checkpoint || fail "the refused run touched the checkpoint"
 
-note "damaged checkpoint"
-head -c 1000 saved.checkpoint > result.h5.checkpoint
-"$PBRFIT" run job.yaml --resume 2>err.txt && fail "a truncated checkpoint was accepted" || STATUS=$?
+note "damaged checkpoint: altered, foreign, or cut short in its last record"
+cp saved.checkpoint result.h5.checkpoint
+printf 'X' | dd of=result.h5.checkpoint bs=1 seek=30 conv=notrunc status=none   # inside the snapshot
+"$PBRFIT" run job.yaml --resume 2>err.txt && fail "an altered checkpoint was accepted" || STATUS=$?
 expect_status 2
-grep -q "result.h5.checkpoint: error: corrupt checkpoint at byte" err.txt || { cat err.txt; fail "wrong message for a truncated checkpoint"; }
+grep -q "result.h5.checkpoint: error: damaged checkpoint at byte 12: record checksum mismatch" err.txt ||
+  { cat err.txt; fail "wrong message for an altered checkpoint"; }
 printf 'not a checkpoint at all, just some text padding it out' > result.h5.checkpoint
 "$PBRFIT" run job.yaml --resume 2>err.txt && fail "a foreign checkpoint was accepted" || STATUS=$?
 expect_status 2
-grep -q "result.h5.checkpoint: error: corrupt checkpoint" err.txt || { cat err.txt; fail "wrong message for a foreign checkpoint"; }
-cp saved.checkpoint result.h5.checkpoint
-
-note "complete the job, then a different job text may not overwrite its result"
-run_ranks 2 run job.yaml --resume -q
+grep -q "result.h5.checkpoint: error: damaged checkpoint at byte 0: not a pbrfit checkpoint" err.txt ||
+  { cat err.txt; fail "wrong message for a foreign checkpoint"; }
+head -c $(( $(stat -c %s saved.checkpoint) - 5 )) saved.checkpoint > result.h5.checkpoint
+run_ranks 1 run job.yaml --resume 2>err.txt
 expect_status 0
+grep -q "the last checkpoint was cut short; continuing from the one before it" err.txt ||
+  { cat err.txt; fail "a checkpoint cut short in its last record was not resumed from the one before"; }
+note "a different job text may not overwrite the complete result"
 cp result.h5 complete.h5
 run_ranks 1 run other.yaml 2>err.txt
 expect_status 2

@@ -12,7 +12,7 @@ retry() { local i; for i in 1 2 3 4 5 6 7 8 9 10; do "$@" && return 0; sleep 0.2
 "$PBRFIT" status result.h5 | tee status.txt
 grep -q "^state: *running" status.txt || fail "status does not say running"
 grep -q "^job: *long-dfg (lut)" status.txt || fail "status does not name the job"
-grep -Eq "^progress: *[0-9]+ of 2048 work items" status.txt || fail "status progress is missing"
+grep -Eq "^progress: *[0-9]+ of 8192 work items" status.txt || fail "status progress is missing"
 grep -Eq "^headline: .*max error estimate" status.txt || fail "status has no headline"
 
 retry bash -c 'h5dump -d /dfg/scale -s "0,0" -c "2,4" result.h5 > dump.txt' || fail "h5dump cannot read the running job's file"

@@ -13,6 +13,7 @@ struct RunOptions {
   std::string output;  // overrides the job's output when set
   bool resume = false;
   bool force = false;
+  int threads = 0;     // compute threads per rank; 0: see runtime/compute_threads.hpp
   runtime::Verbosity verbosity = runtime::Verbosity::normal;
 };
 

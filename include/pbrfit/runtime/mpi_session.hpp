@@ -1,6 +1,8 @@
 #pragma once
-// The MPI environment of one process: initialized once (MPI_THREAD_FUNNELED: only the main thread
-// calls MPI; rank 0 computes on a second thread), finalized on destruction.
+// The MPI environment of one process: initialized once (MPI_THREAD_FUNNELED: only the main thread calls
+// MPI; compute threads never do), finalized on destruction.
+#include <vector>
+
 namespace pbrfit::runtime {
 
 class MpiSession {
@@ -12,14 +14,18 @@ class MpiSession {
 
   int rank() const { return rank_; }
   int size() const { return size_; }
+  int ranks_on_this_node() const { return local_size_; }
   bool coordinator() const { return rank_ == 0; }
 
-  // Every rank returns rank 0's value.
+  // Collective. Every rank returns rank 0's value.
   int broadcast_from_coordinator(int value) const;
+  // Collective. Rank 0 gets every rank's value (by rank); the others get an empty vector.
+  std::vector<int> gather_to_coordinator(int value) const;
 
  private:
   int rank_ = 0;
   int size_ = 1;
+  int local_size_ = 1;
 };
 
 // The rank this process will have, read from the launcher's environment before MPI starts

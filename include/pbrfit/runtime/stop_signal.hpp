@@ -6,5 +6,7 @@ void install_stop_handlers();
 bool stop_requested();
 // The name of the first signal received, e.g. "SIGTERM"; "" when none.
 const char* stop_signal_name();
+// Forgets a received signal: for a process that runs several jobs one after another (tests).
+void clear_stop_request();
 
 }  // namespace pbrfit::runtime

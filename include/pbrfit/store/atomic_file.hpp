@@ -1,5 +1,6 @@
 #pragma once
-// Replaces a file's content so that a crash at any instant leaves either the old or the new content.
+// Whole-file reads and atomic whole-file replacement.
+#include <cstdint>
 #include <span>
 #include <string>
 
@@ -7,10 +8,13 @@
 
 namespace pbrfit::store {
 
-// Writes PATH.tmp, fsyncs it, renames it over PATH and fsyncs the directory. Throws RunError.
+// Writes PATH.tmp, fsyncs it, renames it over PATH and fsyncs the directory, so that a crash at any
+// instant leaves either the old or the new content. On failure PATH is untouched, PATH.tmp removed and
+// RunError thrown with the operating system's reason.
 void replace_file_atomically(const std::string& path, std::span<const std::byte> content);
 
-// The whole file; throws InputError naming the file when it cannot be read.
-Bytes read_whole_file(const std::string& path);
+// The whole of a regular file of at most max_bytes; throws InputError naming the file for anything else
+// (missing, unreadable, a directory, FIFO or device, or too large).
+Bytes read_whole_file(const std::string& path, std::uint64_t max_bytes);
 
 }  // namespace pbrfit::store

@@ -1,12 +1,13 @@
 #pragma once
-// The HDF5 result file of one job, owned by rank 0. Results stream in as blocks and are written at
-// each flush by opening the file, appending and closing it again: between flushes the file on disk is
-// complete and consistent, so h5dump, h5py and `pbrfit status` can read it while the job runs.
+// The HDF5 result file of one job, owned by rank 0. Blocks are written in batches, each by opening the
+// file, writing and closing it again: between batches the file on disk is complete and consistent, so
+// h5dump, h5py and `pbrfit status` can read it while the job runs.
 //
-// Root attributes: pbrfit_version, job_name, job_kind, job_yaml, seed, ranks, state
+// Root attributes: pbrfit_version, job_name, job_kind, job_yaml, seed, ranks, threads, state
 // (running | complete | interrupted | failed), started_utc, finished_utc, items_done, items_total,
 // elapsed_seconds, headline, updated_utc, writer_host, writer_pid, scheduler_job.
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,7 @@ struct RunInfo {
   std::string job_yaml;
   std::uint64_t seed = 0;
   int ranks = 1;
+  int threads = 1;            // compute threads per rank
   std::string started_utc;
   std::string scheduler_job;  // e.g. "slurm job 1234, restart 1"; empty outside a batch system
 };
@@ -38,18 +40,19 @@ class ResultFile {
   // Creates (truncating) the file with every group, axis and (empty, extendible) table of the layout.
   ResultFile(std::string path, ResultLayout layout, const RunInfo& info);
 
-  // Queues blocks; nothing touches the disk until flush().
-  void add(std::vector<Block> blocks);
-  // Writes queued blocks and the progress attributes; throws RunError on I/O failure (queued blocks
-  // are kept for the next attempt).
-  void flush(const Progress& progress);
+  // Writes the blocks (every table opened once, touching blocks merged) and the progress attributes;
+  // throws RunError on I/O failure. Blocks of growing tables must carry their final rows.
+  void write(std::vector<Block> blocks, const Progress& progress);
+
+  // fsyncs the file: once it returns, what was written survives a crash of this machine.
+  void sync_to_disk() const;
 
   const std::string& path() const { return path_; }
+  const ResultLayout& layout() const { return layout_; }
 
  private:
   std::string path_;
   ResultLayout layout_;
-  std::vector<Block> pending_;
 };
 
 // What `status` and the overwrite check read back; throws InputError if the file is not a pbrfit result.
@@ -57,14 +60,16 @@ struct ResultSummary {
   std::string pbrfit_version, job_name, job_kind, job_yaml, state, started_utc, finished_utc;
   std::string headline, updated_utc, writer_host, scheduler_job;
   std::uint64_t seed = 0, items_done = 0, items_total = 0;
-  std::int64_t ranks = 0, writer_pid = 0;
+  std::int64_t ranks = 0, threads = 0, writer_pid = 0;
   double elapsed_seconds = 0.0;
 };
 ResultSummary read_result_summary(const std::string& path);
 
-// Reads one whole table as a flat row-major array with its dimensions (for tests and reports).
+// Reads one whole numeric table, converted to double, as a flat row-major array with its dimensions.
 std::vector<double> read_table(const std::string& path, const std::string& dataset,
                                std::vector<std::uint64_t>* dims = nullptr);
+// Reads one whole table of texts.
+std::vector<std::string> read_text_table(const std::string& path, const std::string& dataset);
 
 std::string utc_now_iso8601();
 // This machine's name, as recorded in writer_host.

@@ -84,7 +84,8 @@ void DfgTable::require_converged(bool converged, double error, std::size_t evalu
   throw RunError(text);
 }
 
-Bytes DfgTable::compute(std::uint32_t, std::uint64_t item, const Bytes&) const {
+Bytes DfgTable::compute(const runtime::ItemTask& task) const {
+  const std::uint64_t item = task.id.item;
   const double a = alpha(item);
   const std::string r = roughness_axis_name(settings_.roughness) + " " + format_number(roughness_[item]);
   Row row;
@@ -148,23 +149,26 @@ std::vector<store::Block> DfgTable::blocks(WorkItemId id, const Bytes& result) c
   return out;
 }
 
-std::string DfgTable::headline(const ItemResults& finished) const {
-  if (finished.empty()) return "no entries yet";
-  double worst = 0.0, evaluations = 0.0;
-  std::size_t entries = 0, above = 0;
-  for (const auto& [id, bytes] : finished) {
-    const Row row = decode(bytes);
-    for (std::size_t i = 0; i < row.scale.size(); ++i) {
-      worst = std::max(worst, row.error_estimate[i]);
-      above += row.error_estimate[i] > settings_.integration.abs_tolerance;
-      evaluations += row.evaluations[i];
-      ++entries;
-    }
+void DfgTable::fold_summary(Bytes& summary, WorkItemId, const Bytes& result) const {
+  auto sum = runtime::summary_as<Summary>(summary);
+  const Row row = decode(result);
+  for (std::size_t i = 0; i < row.scale.size(); ++i) {
+    sum.worst_error = std::max(sum.worst_error, row.error_estimate[i]);
+    sum.above_tolerance += row.error_estimate[i] > settings_.integration.abs_tolerance;
+    sum.evaluations += row.evaluations[i];
+    ++sum.entries;
   }
+  runtime::store_summary(summary, sum);
+}
+
+std::string DfgTable::headline(const Bytes& summary) const {
+  const auto sum = runtime::summary_as<Summary>(summary);
+  if (sum.entries == 0) return "no entries yet";
   char text[200];
-  std::snprintf(text, sizeof text, "%zu entries, max error estimate %.2g (tolerance %.2g%s), %.0f evaluations/entry",
-                entries, worst, settings_.integration.abs_tolerance,
-                above ? (", " + std::to_string(above) + " above it").c_str() : "", evaluations / double(entries));
+  std::snprintf(text, sizeof text, "%llu entries, max error estimate %.2g (tolerance %.2g%s), %.0f evaluations/entry",
+                static_cast<unsigned long long>(sum.entries), sum.worst_error, settings_.integration.abs_tolerance,
+                sum.above_tolerance ? (", " + std::to_string(sum.above_tolerance) + " above it").c_str() : "",
+                sum.evaluations / double(sum.entries));
   return text;
 }
 

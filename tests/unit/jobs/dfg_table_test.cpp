@@ -26,6 +26,12 @@ const store::Block& find(const std::vector<store::Block>& blocks, const std::str
   throw;
 }
 
+// Item `item` of stage 0, as the runtime would hand it to a compute thread.
+Bytes compute(const DfgTable& table, std::uint64_t item) {
+  const Bytes nothing;
+  return table.compute(runtime::ItemTask{{0, item}, nothing, nothing, 0});
+}
+
 }  // namespace
 
 TEST_CASE("the DFG layout names its axes and parametrization") {
@@ -44,7 +50,7 @@ TEST_CASE("the DFG layout names its axes and parametrization") {
 
 TEST_CASE("a DFG row is the engine's entries, placed at its row") {
   const DfgTable table(small(true));
-  const auto blocks = table.blocks({0, 2}, table.compute(0, 2, {}));
+  const auto blocks = table.blocks({0, 2}, compute(table, 2));
   const auto& scale = find(blocks, "scale");
   const auto& bias = find(blocks, "bias");
   CHECK(scale.offset == std::vector<std::uint64_t>{2, 0});
@@ -65,7 +71,7 @@ TEST_CASE("the gloss parametrization names its axis gloss and maps alpha = (1 - 
   s.placement = jobs::lut::Placement::edges;
   const DfgTable table(s);
   CHECK(table.layout().groups[0].axis("gloss").values == std::vector<double>{0.0, 1.0 / 3, 2.0 / 3, 1.0});
-  const auto blocks = table.blocks({0, 3}, table.compute(0, 3, {}));
+  const auto blocks = table.blocks({0, 3}, compute(table, 3));
   CHECK(find(blocks, "alpha").values == std::vector<double>{0.0});
   // gloss 1 is the mirror: scale + bias = 1 exactly at every n.v
   for (std::size_t i = 0; i < 5; ++i)
@@ -76,15 +82,17 @@ TEST_CASE("an entry that misses the tolerance fails the item with what to change
   auto s = small(false);
   s.integration.abs_tolerance = 1e-12;
   s.integration.max_evaluations = 1000;
-  REQUIRE_THROWS_WITH(DfgTable(s).compute(0, 1, {}),
+  REQUIRE_THROWS_WITH(compute(DfgTable(s), 1),
                       Catch::Matchers::ContainsSubstring("did not reach the tolerance") &&
                           Catch::Matchers::ContainsSubstring("raise max_evaluations"));
 }
 
 TEST_CASE("the headline summarizes accuracy and cost of the rows so far") {
   const DfgTable table(small(false));
-  ItemResults done;
-  CHECK(table.headline(done) == "no entries yet");
-  done[{0, 0}] = table.compute(0, 0, {});
-  CHECK_THAT(table.headline(done), Catch::Matchers::StartsWith("5 entries, max error estimate"));
+  Bytes summary;
+  CHECK(table.headline(summary) == "no entries yet");
+  table.fold_summary(summary, {0, 0}, compute(table, 0));
+  CHECK_THAT(table.headline(summary), Catch::Matchers::StartsWith("5 entries, max error estimate"));
+  table.fold_summary(summary, {0, 1}, compute(table, 1));
+  CHECK_THAT(table.headline(summary), Catch::Matchers::StartsWith("10 entries, max error estimate"));
 }

@@ -7,16 +7,12 @@
 
 #include "pbrfit/core/error.hpp"
 #include "pbrfit/store/result_file.hpp"
+#include "store_test_paths.hpp"
 
 using namespace pbrfit;
+using store::ValueType;
 
 namespace {
-
-std::string temporary_path(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() / "pbrfit-store-tests";
-  std::filesystem::create_directories(dir);
-  return (dir / name).string();
-}
 
 store::ResultLayout grid_layout() {
   store::Group g;
@@ -28,19 +24,43 @@ store::ResultLayout grid_layout() {
   return {{g}};
 }
 
-store::RunInfo info() { return {"test-job", "lut", "name: test-job\n", 5, 2, "2026-01-01T00:00:00Z", "slurm job 7, restart 1"}; }
+store::RunInfo info() {
+  return {"test-job", "lut", "name: test-job\n", 5, 2, 3, "2026-01-01T00:00:00Z", "slurm job 7, restart 1"};
+}
+
+store::Progress progress(std::uint64_t done, const std::string& state = "running") {
+  store::Progress p;
+  p.state = state;
+  p.items_done = done;
+  p.items_total = 3;
+  p.headline = "one row";
+  return p;
+}
+
+// Every kind of table the store offers, in one group.
+store::ResultLayout typed_layout() {
+  store::Group g;
+  g.name = "typed";
+  g.axes = {{"x", {0, 1, 2, 3}, "x"}, {"y", {0, 1, 2}, "y"}};
+  g.tables = {
+      {"single", {"x", "y"}, "float32", ValueType::f32},
+      {"counts", {"x"}, "int32", ValueType::i32},
+      {"flags", {"x"}, "uint8", ValueType::u8},
+      {"names", {"x"}, "texts", ValueType::text},
+      {"members", {"member"}, "records", ValueType::f64,
+       {{"expression", ValueType::text, "its text"}, {"cost", ValueType::u32, "ops"}, {"error", ValueType::f64, "rmse"}},
+       true},
+      {"log", {"generation", "y"}, "growing numbers", ValueType::f64, {}, true, {2, 3}},
+  };
+  return {{g}};
+}
 
 }  // namespace
 
 TEST_CASE("blocks land at their offsets; rows not yet written read as NaN; progress is readable") {
   const auto path = temporary_path("result.h5");
   store::ResultFile file(path, grid_layout(), info());
-  file.add({{"grid", "value", {2, 0}, {1, 2}, {5.0, 6.0}}, {"grid", "per_row", {2}, {1}, {9.0}}});
-  store::Progress p;
-  p.items_done = 1;
-  p.items_total = 3;
-  p.headline = "one row";
-  file.flush(p);
+  file.write({{"grid", "value", {2, 0}, {1, 2}, {5.0, 6.0}, {}}, {"grid", "per_row", {2}, {1}, {9.0}, {}}}, progress(1));
 
   std::vector<std::uint64_t> dims;
   const auto values = store::read_table(path, "grid/value", &dims);
@@ -55,19 +75,60 @@ TEST_CASE("blocks land at their offsets; rows not yet written read as NaN; progr
   CHECK(s.job_yaml == "name: test-job\n");
   CHECK(s.seed == 5);
   CHECK(s.ranks == 2);
+  CHECK(s.threads == 3);
   CHECK(s.state == "running");
   CHECK(s.items_done == 1);
   CHECK(s.items_total == 3);
   CHECK(s.headline == "one row");
   CHECK(s.scheduler_job == "slurm job 7, restart 1");
 
-  file.add({{"grid", "value", {0, 0}, {2, 2}, {1, 2, 3, 4}}});
-  p.state = "complete";
-  p.items_done = 3;
-  file.flush(p);
+  file.write({{"grid", "value", {0, 0}, {2, 2}, {1, 2, 3, 4}, {}}}, progress(3, "complete"));
   CHECK(store::read_table(path, "grid/value") == std::vector<double>{1, 2, 3, 4, 5, 6});
   CHECK(store::read_result_summary(path).state == "complete");
   CHECK(store::read_table(path, "grid/row") == std::vector<double>{0.0, 0.5, 1.0});
+}
+
+TEST_CASE("a table written cell by cell, out of order, in one batch holds every value in its place") {
+  const auto path = temporary_path("cells.h5");
+  store::ResultFile file(path, grid_layout(), info());
+  std::vector<store::Block> cells;
+  for (std::uint64_t i : {5, 0, 3, 1, 4, 2}) cells.push_back({"grid", "value", {i / 2, i % 2}, {1, 1}, {double(i)}, {}});
+  file.write(cells, progress(3));
+  CHECK(store::read_table(path, "grid/value") == std::vector<double>{0, 1, 2, 3, 4, 5});
+}
+
+TEST_CASE("tables keep their declared types: float32, integers, texts, records and growing tables") {
+  const auto path = temporary_path("typed.h5");
+  store::ResultFile file(path, typed_layout(), info());
+  std::vector<double> twelve(12);
+  for (int i = 0; i < 12; ++i) twelve[i] = 0.1 * i;
+  file.write({{"typed", "single", {0, 0}, {4, 3}, twelve, {}},
+              {"typed", "counts", {1}, {2}, {7, -8}, {}},
+              {"typed", "flags", {0}, {1}, {255}, {}},
+              {"typed", "names", {2}, {2}, {}, {"two", "three"}},
+              {"typed", "members", {0}, {2}, {3, 0.5, 5, 0.25}, {"x + y", "sin(x) * y + 1"}},
+              {"typed", "log", {0, 0}, {1, 3}, {1, 2, 3}, {}}},
+             progress(1));
+  const auto single = store::read_table(path, "typed/single");
+  for (int i = 0; i < 12; ++i) CHECK(single[i] == double(float(0.1 * i)));
+  const auto counts = store::read_table(path, "typed/counts");
+  CHECK(counts[1] == 7);
+  CHECK(counts[2] == -8);
+  CHECK(store::read_table(path, "typed/flags")[0] == 255);
+  CHECK(store::read_text_table(path, "typed/names") == std::vector<std::string>{"", "", "two", "three"});
+
+  file.write({{"typed", "log", {1, 0}, {2, 3}, {4, 5, 6, 7, 8, 9}, {}}}, progress(2));
+  std::vector<std::uint64_t> dims;
+  CHECK(store::read_table(path, "typed/log", &dims) == std::vector<double>{1, 2, 3, 4, 5, 6, 7, 8, 9});
+  CHECK(dims == std::vector<std::uint64_t>{3, 3});
+}
+
+TEST_CASE("a block that does not fit its table's declaration is a logic error, not a silent write") {
+  const auto path = temporary_path("misfit.h5");
+  store::ResultFile file(path, typed_layout(), info());
+  CHECK_THROWS_AS(file.write({{"typed", "names", {0}, {1}, {1.0}, {}}}, progress(0)), std::logic_error);
+  CHECK_THROWS_AS(file.write({{"typed", "nothing", {0}, {1}, {1.0}, {}}}, progress(0)), std::logic_error);
+  CHECK_THROWS_AS(file.write({{"typed", "counts", {0, 0}, {1, 1}, {1.0}, {}}}, progress(0)), std::logic_error);
 }
 
 TEST_CASE("a file that is not a pbrfit result is an input error") {

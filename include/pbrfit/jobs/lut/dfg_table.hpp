@@ -28,9 +28,10 @@ class DfgTable final : public runtime::Workload {
 
   store::ResultLayout layout() const override;
   std::uint64_t item_count(std::uint32_t) const override { return roughness_.size(); }
-  Bytes compute(std::uint32_t stage, std::uint64_t item, const Bytes& context) const override;
+  Bytes compute(const runtime::ItemTask& task) const override;
   std::vector<store::Block> blocks(WorkItemId id, const Bytes& result) const override;
-  std::string headline(const ItemResults& finished) const override;
+  void fold_summary(Bytes& summary, WorkItemId id, const Bytes& result) const override;
+  std::string headline(const Bytes& summary) const override;
 
  private:
   // A row's result, as computed and as stored in checkpoints.
@@ -38,6 +39,12 @@ class DfgTable final : public runtime::Workload {
     std::vector<double> scale, bias, error_estimate, evaluations;
     double average_energy = 0.0;
     double average_energy_error = 0.0;
+  };
+  // What the headline reports, folded row by row.
+  struct Summary {
+    double worst_error = 0.0;
+    double evaluations = 0.0;  // a sum of integers: exact in any order below 2^53
+    std::uint64_t entries = 0, above_tolerance = 0;
   };
   Bytes encode(const Row& row) const;
   Row decode(const Bytes& bytes) const;

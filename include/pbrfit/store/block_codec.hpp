@@ -1,0 +1,29 @@
+#pragma once
+// Blocks as bytes, for checkpoints and the block journal. A block names its table by its index in the
+// layout; numbers are stored in the table's own precision (float32 values lose nothing the result file
+// would not lose), texts as strings. Decoding checks everything against the layout, so a crafted or
+// damaged file can name no table, dimension or position the layout does not have.
+#include "pbrfit/core/bytes.hpp"
+#include "pbrfit/store/result_layout.hpp"
+
+namespace pbrfit::store {
+
+class BlockCodec {
+ public:
+  explicit BlockCodec(const ResultLayout& layout);
+
+  void encode(ByteWriter& out, const Block& block) const;
+  // Throws ByteFormatError (with the offset) for data that does not describe a block of the layout.
+  Block decode(ByteReader& in) const;
+
+  const TableIndex& tables() const { return index_; }
+
+ private:
+  // Extent of each dimension of a fixed table (0 for the growing first dimension: unbounded).
+  std::vector<std::vector<std::uint64_t>> extents_;
+  // Per table, whether each numeric slot of an element is stored as float32.
+  std::vector<std::vector<bool>> single_;
+  TableIndex index_;
+};
+
+}  // namespace pbrfit::store

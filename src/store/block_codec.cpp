@@ -1,0 +1,75 @@
+#include "pbrfit/store/block_codec.hpp"
+
+namespace pbrfit::store {
+
+namespace {
+
+constexpr std::uint64_t max_elements_per_block = std::uint64_t(1) << 32;
+
+std::vector<bool> single_precision_slots(const Table& table) {
+  if (!table.is_record()) return {table.type == ValueType::f32};
+  std::vector<bool> slots;
+  for (const auto& f : table.fields)
+    if (is_numeric(f.type)) slots.push_back(f.type == ValueType::f32);
+  return slots;
+}
+
+}  // namespace
+
+BlockCodec::BlockCodec(const ResultLayout& layout) : index_(layout) {
+  for (const auto& group : layout.groups) {
+    for (const auto& table : group.tables) {
+      std::vector<std::uint64_t> extent;
+      for (std::size_t d = 0; d < table.axes.size(); ++d)
+        extent.push_back(d == 0 && table.growing ? 0 : group.axis(table.axes[d]).values.size());
+      extents_.push_back(std::move(extent));
+      single_.push_back(single_precision_slots(table));
+    }
+  }
+}
+
+void BlockCodec::encode(ByteWriter& out, const Block& block) const {
+  const std::uint32_t t = index_.find(block.group, block.table);
+  check_block(block, index_.table(t));
+  out.put(t);
+  out.put_array(std::span<const std::uint64_t>(block.offset));
+  out.put_array(std::span<const std::uint64_t>(block.count));
+  const auto& slots = single_[t];
+  for (std::size_t i = 0; i < block.values.size(); ++i) {
+    if (slots[i % slots.size()]) out.put(float(block.values[i]));
+    else out.put(block.values[i]);
+  }
+  for (const auto& text : block.texts) out.put_string(text);
+}
+
+Block BlockCodec::decode(ByteReader& in) const {
+  const std::size_t start = in.offset();
+  const auto t = in.get<std::uint32_t>();
+  if (t >= index_.size()) throw ByteFormatError(start, "block names table " + std::to_string(t) + ", which the job does not have");
+  const Table& table = index_.table(t);
+  Block block{index_.group_of(t), table.name, in.get_array<std::uint64_t>(), in.get_array<std::uint64_t>(), {}, {}};
+  const auto& extent = extents_[t];
+  if (block.offset.size() != extent.size() || block.count.size() != extent.size())
+    throw ByteFormatError(start, "block of " + block.group + "/" + block.table + " has the wrong number of dimensions");
+  std::uint64_t elements = 1;
+  for (std::size_t d = 0; d < extent.size(); ++d) {
+    const bool unbounded = extent[d] == 0 && d == 0 && table.growing;
+    const std::uint64_t limit = unbounded ? max_elements_per_block : extent[d];
+    if (block.count[d] > limit || block.offset[d] > limit - block.count[d])
+      throw ByteFormatError(start, "block of " + block.group + "/" + block.table + " lies outside the table");
+    elements *= block.count[d];
+    if (elements > max_elements_per_block) throw ByteFormatError(start, "block is implausibly large");
+  }
+  const auto& slots = single_[t];
+  const std::uint64_t numbers = elements * table.numbers_per_element();
+  if (numbers > in.remaining()) throw ByteFormatError(in.offset(), "block values exceed the data");
+  block.values.resize(numbers);
+  for (std::size_t i = 0; i < numbers; ++i) block.values[i] = slots[i % slots.size()] ? in.get<float>() : in.get<double>();
+  const std::uint64_t texts = elements * table.texts_per_element();
+  if (texts > in.remaining() / sizeof(std::uint64_t)) throw ByteFormatError(in.offset(), "block texts exceed the data");
+  block.texts.resize(texts);
+  for (auto& text : block.texts) text = in.get_string();
+  return block;
+}
+
+}  // namespace pbrfit::store

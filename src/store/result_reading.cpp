@@ -1,0 +1,100 @@
+#include <unistd.h>
+
+#include <numeric>
+
+#include "hdf5_handle.hpp"
+#include "pbrfit/core/error.hpp"
+#include "pbrfit/store/result_file.hpp"
+
+namespace pbrfit::store {
+
+using h5::check;
+using h5::Handle;
+
+namespace {
+
+ResultSummary read_summary_attributes(hid_t file) {
+  ResultSummary s;
+  s.pbrfit_version = h5::read_string_attribute(file, "pbrfit_version");
+  s.job_name = h5::read_string_attribute(file, "job_name");
+  s.job_kind = h5::read_string_attribute(file, "job_kind");
+  s.job_yaml = h5::read_string_attribute(file, "job_yaml");
+  s.state = h5::read_string_attribute(file, "state");
+  s.started_utc = h5::read_string_attribute(file, "started_utc");
+  s.finished_utc = h5::read_string_attribute(file, "finished_utc");
+  s.headline = h5::read_string_attribute(file, "headline");
+  s.updated_utc = h5::read_string_attribute(file, "updated_utc");
+  s.writer_host = h5::read_string_attribute(file, "writer_host");
+  s.scheduler_job = h5::read_string_attribute(file, "scheduler_job");
+  s.seed = std::uint64_t(h5::read_i64_attribute(file, "seed"));
+  s.items_done = std::uint64_t(h5::read_i64_attribute(file, "items_done"));
+  s.items_total = std::uint64_t(h5::read_i64_attribute(file, "items_total"));
+  s.ranks = h5::read_i64_attribute(file, "ranks");
+  s.threads = h5::has_attribute(file, "threads") ? h5::read_i64_attribute(file, "threads") : 1;
+  s.writer_pid = h5::read_i64_attribute(file, "writer_pid");
+  s.elapsed_seconds = h5::read_f64_attribute(file, "elapsed_seconds");
+  return s;
+}
+
+Handle open_dataset(const std::string& path, const std::string& dataset, Handle& file) {
+  file = h5::open_file(path, false);
+  return Handle(check(H5Dopen2(file, dataset.c_str(), H5P_DEFAULT), "open " + dataset), H5Dclose);
+}
+
+std::vector<hsize_t> dimensions(hid_t data, const std::string& dataset) {
+  Handle space(check(H5Dget_space(data), "read extent of " + dataset), H5Sclose);
+  std::vector<hsize_t> dims(std::size_t(H5Sget_simple_extent_ndims(space)));
+  H5Sget_simple_extent_dims(space, dims.data(), nullptr);
+  return dims;
+}
+
+hsize_t element_count(const std::vector<hsize_t>& dims) {
+  return std::accumulate(dims.begin(), dims.end(), hsize_t{1}, std::multiplies<>());
+}
+
+}  // namespace
+
+ResultSummary read_result_summary(const std::string& path) {
+  if (access(path.c_str(), R_OK) != 0) throw InputError({path}, "cannot read result file: no such file or no permission");
+  Handle file;
+  try {
+    file = h5::open_file(path, false);
+  } catch (const RunError&) {
+    throw InputError({path}, "not a readable HDF5 file (damaged, or not a pbrfit result)");
+  }
+  if (!h5::has_attribute(file, "pbrfit_version") || !h5::has_attribute(file, "job_yaml"))
+    throw InputError({path}, "not a pbrfit result file (no pbrfit_version or job_yaml attribute)");
+  try {
+    return read_summary_attributes(file);
+  } catch (const RunError& e) {
+    throw InputError({path}, std::string("incomplete pbrfit result file: ") + e.what());
+  }
+}
+
+std::vector<double> read_table(const std::string& path, const std::string& dataset, std::vector<std::uint64_t>* dims_out) {
+  Handle file;
+  Handle data = open_dataset(path, dataset, file);
+  const auto dims = dimensions(data, dataset);
+  std::vector<double> values(element_count(dims));
+  if (!values.empty())
+    check(H5Dread(data, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), "read " + dataset);
+  if (dims_out) dims_out->assign(dims.begin(), dims.end());
+  return values;
+}
+
+std::vector<std::string> read_text_table(const std::string& path, const std::string& dataset) {
+  Handle file;
+  Handle data = open_dataset(path, dataset, file);
+  std::vector<char*> texts(element_count(dimensions(data, dataset)), nullptr);
+  if (texts.empty()) return {};
+  Handle type = h5::string_type();
+  check(H5Dread(data, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, texts.data()), "read " + dataset);
+  std::vector<std::string> out;
+  for (char* t : texts) {
+    out.emplace_back(t ? t : "");
+    H5free_memory(t);
+  }
+  return out;
+}
+
+}  // namespace pbrfit::store
