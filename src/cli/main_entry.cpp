@@ -41,6 +41,8 @@ int main_entry(int argc, char** argv) {
   submit_cmd->add_flag("--dry-run", submit.dry_run, "print the batch script instead of submitting it");
   submit_cmd->add_option("--ranks", submit.ranks, "MPI ranks (Slurm tasks), instead of resources.ranks")
       ->check(CLI::Range(1, 65536));
+  submit_cmd->add_option("--threads", submit.threads, "compute threads (CPUs) per rank, instead of resources.threads")
+      ->check(CLI::Range(1, 1024));
   submit_cmd->add_option("--time", submit.time_limit, "time limit, instead of resources.time_limit");
   submit_cmd->add_option("--partition", submit.partition, "partition, instead of resources.partition");
   submit_cmd->add_option("--account", submit.account, "account, instead of resources.account");

@@ -22,7 +22,7 @@ std::string read_text(const std::string& path) {
 }
 
 submit::ResourceOverrides overrides_of(const SubmitOptions& options) {
-  return {options.ranks, options.time_limit, options.partition, options.account};
+  return {options.ranks, options.threads, options.time_limit, options.partition, options.account};
 }
 
 // Validates one job, renders its script and submits it (or prints it for --dry-run).
@@ -43,8 +43,9 @@ void submit_one(const std::string& job_file, const SubmitOptions& options, const
   const std::string id = submit::run_sbatch(batch.script);
   std::string log = batch.log;
   if (const auto at = log.find("%j"); at != std::string::npos) log.replace(at, 2, id);
-  std::printf("submitted %s as Slurm job %s (%d rank%s, time limit %s)\n  result: %s\n  log:    %s\n  script: %s\n",
-              job_file.c_str(), id.c_str(), batch.ranks, batch.ranks == 1 ? "" : "s", batch.time_limit.c_str(),
+  std::printf("submitted %s as Slurm job %s (%d rank%s x %d thread%s, time limit %s)\n  result: %s\n  log:    %s\n  script: %s\n",
+              job_file.c_str(), id.c_str(), batch.ranks, batch.ranks == 1 ? "" : "s", batch.threads,
+              batch.threads == 1 ? "" : "s", batch.time_limit.c_str(),
               batch.output.c_str(), log.c_str(), batch.script.c_str());
   std::printf("  watch:  pbrfit status %s\n", batch.output.c_str());
 }

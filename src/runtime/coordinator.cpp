@@ -12,6 +12,15 @@
 
 namespace pbrfit::runtime {
 
+namespace {
+
+// Finished blocks wait in memory, encoded, for the next flush and the next checkpoint; beyond these
+// amounts the flush or checkpoint comes early, whatever the intervals, so rank 0's memory stays bounded.
+constexpr std::size_t max_unflushed_blocks = 65536;
+constexpr std::size_t max_unjournaled_bytes = std::size_t(32) << 20;
+
+}  // namespace
+
 Coordinator::Coordinator(const MpiSession& mpi, const Workload& workload, const RunSettings& settings, RunState& state,
                          Checkpointer& checkpointer, store::ResultFile& file, std::vector<int> threads,
                          double elapsed_before)
@@ -209,10 +218,13 @@ void Coordinator::say_farewell(int code) {
 }
 
 void Coordinator::save_checkpoint() {
+  const auto before = checkpointer_.bytes_written();
   checkpointer_.save(state_, elapsed());
   done_since_checkpoint_ = 0;
   last_checkpoint_ = Clock::now();
-  spdlog::debug("checkpoint written: {} of {} items", state_.items_done(), items_total_);
+  spdlog::debug("checkpoint written: {} of {} items; {} bytes written, checkpoint {} bytes, journal {} bytes",
+                state_.items_done(), items_total_, checkpointer_.bytes_written() - before,
+                checkpointer_.checkpoint_bytes(), checkpointer_.journal_bytes());
 }
 
 void Coordinator::maybe_checkpoint() {
@@ -220,12 +232,14 @@ void Coordinator::maybe_checkpoint() {
   const bool by_time = settings_.checkpoint_interval_seconds > 0 && since >= settings_.checkpoint_interval_seconds;
   const bool by_items = settings_.checkpoint_interval_items > 0 &&
                         done_since_checkpoint_ >= std::uint64_t(settings_.checkpoint_interval_items);
-  if ((by_time || by_items) && state_.has_news()) save_checkpoint();
+  const bool by_memory = state_.unjournaled().bytes().size() >= max_unjournaled_bytes;
+  if ((by_time || by_items || by_memory) && state_.has_news()) save_checkpoint();
 }
 
 void Coordinator::maybe_flush() {
-  if (std::chrono::duration<double>(Clock::now() - last_flush_).count() >= settings_.flush_interval_seconds)
-    flush("running");
+  const bool by_time =
+      std::chrono::duration<double>(Clock::now() - last_flush_).count() >= settings_.flush_interval_seconds;
+  if (by_time || state_.unflushed_blocks() >= max_unflushed_blocks) flush("running");
 }
 
 void Coordinator::flush(const std::string& state) {

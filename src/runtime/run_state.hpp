@@ -39,6 +39,7 @@ class RunState {
   void advance();
 
   std::vector<store::Block> take_unflushed();
+  std::uint64_t unflushed_blocks() const { return unflushed_.count(); }
   const PendingBlocks& unjournaled() const { return unjournaled_; }
   void journaled() { unjournaled_.clear(); }
 

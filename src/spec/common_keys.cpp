@@ -26,6 +26,7 @@ Schema checkpoint_schema() {
 Schema resources_schema() {
   Schema schema("resources");
   schema.integer("ranks", "MPI ranks to run with.").defaults_to(2).range(1, 65536);
+  schema.integer("threads", "Compute threads per rank: the CPUs each Slurm task asks for.").defaults_to(1).range(1, 1024);
   schema.string("time_limit", std::string("Wall-clock limit in Slurm form: ") + time_limit_forms + ".")
       .defaults_to("01:00:00");
   schema.string("partition", "Slurm partition; empty: the cluster's default.").defaults_to("");
@@ -87,6 +88,7 @@ Resources read_resources(const Section& resources) {
   }
   if (*seconds == 0) resources.reject("time_limit", "must be longer than zero, got " + quoted(time_limit));
   return Resources{.ranks = static_cast<int>(resources.get_int("ranks")),
+                   .threads = static_cast<int>(resources.get_int("threads")),
                    .time_limit = time_limit,
                    .time_limit_seconds = static_cast<double>(*seconds),
                    .partition = resources.get_string("partition"),

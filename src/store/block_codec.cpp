@@ -31,9 +31,9 @@ BlockCodec::BlockCodec(const ResultLayout& layout) : index_(layout) {
 void BlockCodec::encode(ByteWriter& out, const Block& block) const {
   const std::uint32_t t = index_.find(block.group, block.table);
   check_block(block, index_.table(t));
-  out.put(t);
-  out.put_array(std::span<const std::uint64_t>(block.offset));
-  out.put_array(std::span<const std::uint64_t>(block.count));
+  out.put_varint(t);
+  for (const auto o : block.offset) out.put_varint(o);
+  for (const auto c : block.count) out.put_varint(c);
   const auto& slots = single_[t];
   for (std::size_t i = 0; i < block.values.size(); ++i) {
     if (slots[i % slots.size()]) out.put(float(block.values[i]));
@@ -44,13 +44,14 @@ void BlockCodec::encode(ByteWriter& out, const Block& block) const {
 
 Block BlockCodec::decode(ByteReader& in) const {
   const std::size_t start = in.offset();
-  const auto t = in.get<std::uint32_t>();
+  const auto t = in.get_varint();
   if (t >= index_.size()) throw ByteFormatError(start, "block names table " + std::to_string(t) + ", which the job does not have");
-  const Table& table = index_.table(t);
-  Block block{index_.group_of(t), table.name, in.get_array<std::uint64_t>(), in.get_array<std::uint64_t>(), {}, {}};
+  const Table& table = index_.table(std::uint32_t(t));
   const auto& extent = extents_[t];
-  if (block.offset.size() != extent.size() || block.count.size() != extent.size())
-    throw ByteFormatError(start, "block of " + block.group + "/" + block.table + " has the wrong number of dimensions");
+  Block block{index_.group_of(std::uint32_t(t)), table.name, std::vector<std::uint64_t>(extent.size()),
+              std::vector<std::uint64_t>(extent.size()), {}, {}};
+  for (auto& o : block.offset) o = in.get_varint();
+  for (auto& c : block.count) c = in.get_varint();
   std::uint64_t elements = 1;
   for (std::size_t d = 0; d < extent.size(); ++d) {
     const bool unbounded = extent[d] == 0 && d == 0 && table.growing;

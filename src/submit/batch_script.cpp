@@ -52,6 +52,8 @@ BatchJob batch_job_for(const spec::JobSpec& job, const ResourceOverrides& overri
   BatchJob b;
   b.name = job.name;
   b.ranks = overrides.ranks > 0 ? overrides.ranks : job.resources.ranks;
+  b.threads = overrides.threads > 0 ? overrides.threads : job.resources.threads;
+  b.launcher = "srun --mpi=pmix --cpus-per-task=" + std::to_string(b.threads);
   b.time_limit = overrides.time_limit.empty() ? job.resources.time_limit : overrides.time_limit;
   b.time_limit_seconds = job.resources.time_limit_seconds;
   if (!overrides.time_limit.empty()) {
@@ -107,6 +109,7 @@ std::string render_batch_script(const BatchJob& job, const std::string& template
   const std::map<std::string, std::string> values = {
       {"name", job.name},
       {"ranks", std::to_string(job.ranks)},
+      {"threads", std::to_string(job.threads)},
       {"time_limit", job.time_limit},
       {"warning_seconds", std::to_string(job.warning_seconds)},
       {"partition_directive", directive("partition", job.partition)},

@@ -54,10 +54,11 @@ expect_status 2
 [[ "$(cat err.txt)" == "$expected" ]] || { cat err.txt; fail "submit: wrong message"; }
 cp "$PBRFIT_SOURCE_DIR/tests/jobs/small-dfg.yaml" a.yaml
 cp "$PBRFIT_SOURCE_DIR/tests/jobs/resume-dfg.yaml" b.yaml
-"$PBRFIT" submit a.yaml b.yaml --dry-run --ranks 4 --time 30 > scripts.txt
+"$PBRFIT" submit a.yaml b.yaml --dry-run --ranks 4 --threads 3 --time 30 > scripts.txt
 [[ $(grep -c "^#SBATCH --requeue" scripts.txt) -eq 2 ]] || fail "submit --dry-run did not render two scripts"
 [[ $(grep -c "^#SBATCH --ntasks=4" scripts.txt) -eq 2 ]] || fail "--ranks did not override the job's ranks"
-grep -q "^srun --mpi=pmix '.*/pbrfit' run '$WORK/a.yaml' --output '$WORK/result.h5' --resume$" scripts.txt ||
+[[ $(grep -c "^#SBATCH --cpus-per-task=3" scripts.txt) -eq 2 ]] || fail "--threads did not set the CPUs per task"
+grep -q "^srun --mpi=pmix --cpus-per-task=3 '.*/pbrfit' run '$WORK/a.yaml' --output '$WORK/result.h5' --resume$" scripts.txt ||
   { cat scripts.txt; fail "the script does not run the job with --resume"; }
 set +e
 "$PBRFIT" submit a.yaml --dry-run --time "soon" 2>err.txt; STATUS=$?

@@ -1,6 +1,9 @@
 #include "chain_workload.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <filesystem>
+#include <fstream>
 #include <cstdio>
 #include <cstring>
 #include <thread>
@@ -43,6 +46,25 @@ ChainWorkload::Result ChainWorkload::decode(const Bytes& bytes) {
   return {in.get<std::uint64_t>(), in.get<std::uint64_t>()};
 }
 
+void ChainWorkload::report(std::uint32_t stage) const {
+  std::error_code error;
+  const auto size = [&](const std::string& path) {
+    const auto bytes = std::filesystem::file_size(path, error);
+    return error ? 0 : bytes;
+  };
+  std::fprintf(stderr, "report: stage %u peak_rss_kib %ld checkpoint_bytes %llu journal_bytes %llu\n", stage,
+               peak_rss_kib(), static_cast<unsigned long long>(size(settings_.output + ".checkpoint")),
+               static_cast<unsigned long long>(size(settings_.output + ".journal")));
+}
+
+long peak_rss_kib() {
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line))
+    if (line.rfind("VmHWM:", 0) == 0) return std::stol(line.substr(6));
+  return 0;
+}
+
 void ChainWorkload::maybe_raise(std::uint32_t stage, std::uint64_t collected) const {
   if (settings_.signal != 0 && stage == settings_.signal_stage && collected == settings_.signal_after)
     std::raise(settings_.signal);
@@ -50,6 +72,8 @@ void ChainWorkload::maybe_raise(std::uint32_t stage, std::uint64_t collected) co
 
 Bytes ChainWorkload::stage_context(std::uint32_t stage, const ItemResults& kept) const {
   maybe_raise(stage, 0);
+  if (std::find(settings_.report_stages.begin(), settings_.report_stages.end(), stage) != settings_.report_stages.end())
+    report(stage);
   std::uint64_t count = 0, sum = 0;
   for (const auto& [id, result] : kept) {
     if (id.stage + 1 != stage) continue;

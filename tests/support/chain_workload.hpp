@@ -7,6 +7,8 @@
 #include <csignal>
 #include <cstdint>
 #include <limits>
+#include <string>
+#include <vector>
 
 #include "pbrfit/runtime/workload.hpp"
 
@@ -25,6 +27,10 @@ struct ChainSettings {
   std::uint64_t signal_after = 0;
   std::uint32_t fail_stage = std::numeric_limits<std::uint32_t>::max();
   std::uint64_t fail_item = 0;
+  // Benchmarks: when these stages start, rank 0 prints its peak memory and the sizes of the checkpoint
+  // and block journal of `output`.
+  std::vector<std::uint32_t> report_stages = {};
+  std::string output = {};
 };
 
 class ChainWorkload final : public runtime::Workload {
@@ -38,7 +44,10 @@ class ChainWorkload final : public runtime::Workload {
   Bytes item_input(std::uint32_t stage, std::uint64_t item, const ItemResults& kept) const override;
   Bytes compute(const runtime::ItemTask& task) const override;
   std::vector<store::Block> blocks(WorkItemId id, const Bytes& result) const override;
-  std::uint32_t kept_through(WorkItemId id) const override { return id.stage + 1; }
+  // The next stage reads every result of this one; the last stage's results no stage reads.
+  std::uint32_t kept_through(WorkItemId id) const override {
+    return id.stage + 1 < settings_.stages ? id.stage + 1 : id.stage;
+  }
   void fold_summary(Bytes& summary, WorkItemId id, const Bytes& result) const override;
   std::string headline(const Bytes& summary) const override;
 
@@ -52,8 +61,12 @@ class ChainWorkload final : public runtime::Workload {
   };
   static Result decode(const Bytes& bytes);
   void maybe_raise(std::uint32_t stage, std::uint64_t collected) const;
+  void report(std::uint32_t stage) const;
 
   ChainSettings settings_;
 };
+
+// This process's peak resident memory (VmHWM), in KiB.
+long peak_rss_kib();
 
 }  // namespace pbrfit::testing

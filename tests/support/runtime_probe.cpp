@@ -39,6 +39,10 @@ int main(int argc, char** argv) {
   app.add_option("--after", chain.signal_after);
   app.add_option("--fail", fail, "STAGE:ITEM");
   app.add_flag("-q,--quiet", quiet);
+  bool verbose = false, no_log = false;
+  app.add_flag("-v,--verbose", verbose);
+  app.add_flag("--no-log", no_log, "items append no rows to the growing table");
+  app.add_option("--report-stages", chain.report_stages, "print rank 0's peak memory and file sizes as these stages start");
   CLI11_PARSE(app, argc, argv);
   if (!fail.empty()) {
     chain.fail_stage = std::uint32_t(std::stoul(fail.substr(0, fail.find(':'))));
@@ -46,7 +50,11 @@ int main(int argc, char** argv) {
   }
   try {
     runtime::MpiSession mpi;
-    runtime::setup_logging(mpi.rank(), quiet ? runtime::Verbosity::quiet : runtime::Verbosity::normal);
+    runtime::setup_logging(mpi.rank(), quiet     ? runtime::Verbosity::quiet
+                                       : verbose ? runtime::Verbosity::verbose
+                                                 : runtime::Verbosity::normal);
+    chain.output = run.output;
+    chain.log_rows = !no_log;
     const testing::ChainWorkload workload(chain);
     run.threads = runtime::compute_threads(threads, mpi.ranks_on_this_node());
     run.job_text = "chain " + std::to_string(chain.stages) + "x" + std::to_string(chain.items) + " bytes " +
@@ -54,7 +62,10 @@ int main(int argc, char** argv) {
     run.job_name = "chain";
     run.job_kind = "synthetic";
     run.seed = 7;
-    return runtime::run_workload(mpi, workload, run);
+    const int code = runtime::run_workload(mpi, workload, run);
+    if (mpi.coordinator() && !chain.report_stages.empty())
+      std::fprintf(stderr, "report: end peak_rss_kib %ld\n", testing::peak_rss_kib());
+    return code;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "pbrfit_runtime_probe: error: %s\n", e.what());
     return exit_run_failure;

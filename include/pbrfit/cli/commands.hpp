@@ -21,6 +21,7 @@ struct SubmitOptions {
   std::vector<std::string> job_files;
   bool dry_run = false;
   int ranks = 0;  // 0: the job's resources
+  int threads = 0;  // 0: the job's resources
   std::string time_limit, partition, account;
   std::string template_file;  // empty: the installed cluster/sbatch.template
 };

@@ -27,6 +27,14 @@ class ByteWriter {
     put<std::uint64_t>(values.size());
     append(values.data(), values.size_bytes());
   }
+  // Unsigned LEB128: 7 bits a byte, small values in one byte.
+  void put_varint(std::uint64_t value) {
+    while (value >= 0x80) {
+      put(std::uint8_t(value | 0x80));
+      value >>= 7;
+    }
+    put(std::uint8_t(value));
+  }
   void put_string(const std::string& s) {
     put_array(std::span<const char>(s.data(), s.size()));
   }
@@ -76,6 +84,15 @@ class ByteReader {
     std::memcpy(values.data(), bytes_.data() + offset_, count * sizeof(T));
     offset_ += count * sizeof(T);
     return values;
+  }
+  std::uint64_t get_varint() {
+    std::uint64_t value = 0;
+    for (int shift = 0; shift < 64; shift += 7) {
+      const auto byte = get<std::uint8_t>();
+      value |= std::uint64_t(byte & 0x7f) << shift;
+      if (!(byte & 0x80)) return value;
+    }
+    throw ByteFormatError(offset_, "variable-length integer longer than 64 bits");
   }
   std::string get_string() {
     auto chars = get_array<char>();

@@ -6,7 +6,7 @@
 //   seed: 1                       # default 0; random streams derive from (seed, work item)
 //   output: results/x.h5          # default results/<name>.h5
 //   checkpoint: {interval_seconds: 30, interval_items: 0}   # whichever comes first; 0 disables
-//   resources: {ranks: 2, time_limit: "01:00:00", partition: "", account: ""}
+//   resources: {ranks: 2, threads: 1, time_limit: "01:00:00", partition: "", account: ""}
 //   lut: {...}                    # the kind's own section
 #include <cstdint>
 #include <functional>
@@ -25,6 +25,7 @@ struct CheckpointPolicy {
 
 struct Resources {
   int ranks = 2;
+  int threads = 1;  // compute threads per rank (CPUs per Slurm task)
   std::string time_limit = "01:00:00";  // Slurm format: see parse_slurm_time_limit
   double time_limit_seconds = 3600.0;
   std::string partition;

@@ -1,6 +1,7 @@
 #pragma once
 // Blocks as bytes, for checkpoints and the block journal. A block names its table by its index in the
-// layout; numbers are stored in the table's own precision (float32 values lose nothing the result file
+// layout; its table index, offsets and counts are variable-length integers (a cell costs a few bytes
+// beside its value); numbers are stored in the table's own precision (float32 values lose nothing the result file
 // would not lose), texts as strings. Decoding checks everything against the layout, so a crafted or
 // damaged file can name no table, dimension or position the layout does not have.
 #include "pbrfit/core/bytes.hpp"

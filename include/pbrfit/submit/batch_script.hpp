@@ -12,6 +12,7 @@ namespace pbrfit::submit {
 // Command-line overrides of the job's `resources`; empty / 0 keeps the job's value.
 struct ResourceOverrides {
   int ranks = 0;
+  int threads = 0;
   std::string time_limit;
   std::string partition;
   std::string account;
@@ -20,6 +21,7 @@ struct ResourceOverrides {
 struct BatchJob {
   std::string name;
   int ranks = 1;
+  int threads = 1;              // CPUs per task
   std::string time_limit;       // Slurm format
   double time_limit_seconds = 0;
   int warning_seconds = 60;     // SIGUSR1 this long before the time limit
