@@ -274,7 +274,7 @@ resources:
 lut: {function: dfg}
 )",
      "test.yaml:4:3: error: unknown key 'nodes' in 'resources'; "
-     "valid keys: ranks, time_limit, partition, account"},
+     "valid keys: ranks, threads, time_limit, partition, account"},
 
     // The kind's section (the test schema in test_kinds.hpp).
     {"required key missing", R"(name: dfg

@@ -57,15 +57,15 @@ TEST_CASE("decoding refuses blocks the layout cannot hold") {
   const store::BlockCodec codec(layout());
   const auto refused = [&](store::Block b) {
     ByteWriter out;
-    out.put<std::uint32_t>(b.table == "half" ? 0 : b.table == "full" ? 1 : 7);
-    out.put_array(std::span<const std::uint64_t>(b.offset));
-    out.put_array(std::span<const std::uint64_t>(b.count));
+    out.put_varint(b.table == "half" ? 0 : b.table == "full" ? 1 : 7);
+    for (auto o : b.offset) out.put_varint(o);
+    for (auto c : b.count) out.put_varint(c);
     for (double v : b.values) out.put(v);
     ByteReader in(out.bytes());
     CHECK_THROWS_AS(codec.decode(in), ByteFormatError);
   };
   refused({"g", "full", {2}, {2}, {1, 2}, {}});         // beyond the axis
-  refused({"g", "full", {0, 0}, {1, 1}, {1}, {}});      // wrong rank
+  refused({"g", "full", {0}, {4}, {1, 2, 3, 4}, {}});    // more cells than the axis
   refused({"g", "unknown", {0}, {1}, {1}, {}});         // no such table
   refused({"g", "full", {0}, {3}, {1, 2}, {}});         // fewer values than cells
 }

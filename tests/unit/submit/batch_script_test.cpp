@@ -50,8 +50,10 @@ TEST_CASE("a batch job takes the job's resources, absolute paths and overrides")
   CHECK(b.output == "/home/u/work/out/r.h5");
   CHECK(b.log == "/home/u/work/out/r.slurm-%j.log");
   CHECK(b.script == "/home/u/work/out/r.h5.sbatch");
-  const auto o = submit::batch_job_for(job(), {8, "10:00", "short", "acct"}, "/opt/pbrfit", "/w");
+  CHECK(b.threads == 1);
+  const auto o = submit::batch_job_for(job(), {8, 4, "10:00", "short", "acct"}, "/opt/pbrfit", "/w");
   CHECK(o.ranks == 8);
+  CHECK(o.threads == 4);
   CHECK(o.time_limit == "10:00");
   CHECK(o.warning_seconds == 60);
   CHECK(o.partition == "short");
@@ -62,21 +64,23 @@ TEST_CASE("values that could escape a #SBATCH line are refused") {
   REQUIRE_THROWS_WITH(submit::batch_job_for(job(", partition: \"a b\""), {}, "/p", "/w"),
                       "jobs/a.yaml: error: the partition 'a b' may contain only letters, digits and ._-, to go "
                       "into a Slurm batch script");
-  REQUIRE_THROWS_AS(submit::batch_job_for(job(), {0, "", "", "x;reboot"}, "/p", "/w"), InputError);
+  REQUIRE_THROWS_AS(submit::batch_job_for(job(), {0, 0, "", "", "x;reboot"}, "/p", "/w"), InputError);
   REQUIRE_THROWS_AS(submit::batch_job_for(job(), {}, "/p", "/home/my work"), InputError);
-  REQUIRE_THROWS_AS(submit::batch_job_for(job(), {0, "soon", "", ""}, "/p", "/w"), InputError);
+  REQUIRE_THROWS_AS(submit::batch_job_for(job(), {0, 0, "soon", "", ""}, "/p", "/w"), InputError);
 }
 
 TEST_CASE("the shipped template renders a requeueable, signalled, resuming script") {
-  const auto b = submit::batch_job_for(job(", partition: short"), {}, "/opt/pbrfit", "/w");
+  const auto b = submit::batch_job_for(job(", partition: short, threads: 6"), {}, "/opt/pbrfit", "/w");
   const auto script = submit::render_batch_script(b, shipped_template(), "sbatch.template");
   CHECK_THAT(script, ContainsSubstring("#SBATCH --ntasks=3\n"));
+  CHECK_THAT(script, ContainsSubstring("#SBATCH --cpus-per-task=6\n"));
   CHECK_THAT(script, ContainsSubstring("#SBATCH --time=02:00:00\n"));
   CHECK_THAT(script, ContainsSubstring("#SBATCH --partition=short\n"));
   CHECK_THAT(script, ContainsSubstring("# (no account)\n"));
   CHECK_THAT(script, ContainsSubstring("#SBATCH --requeue\n"));
   CHECK_THAT(script, ContainsSubstring("#SBATCH --signal=USR1@600\n"));
-  CHECK_THAT(script, ContainsSubstring("srun --mpi=pmix '/opt/pbrfit' run '/w/jobs/a.yaml' --output '/w/out/r.h5' --resume"));
+  CHECK_THAT(script, ContainsSubstring("srun --mpi=pmix --cpus-per-task=6 '/opt/pbrfit' run '/w/jobs/a.yaml' --output "
+                                       "'/w/out/r.h5' --resume"));
   CHECK_THAT(script, !ContainsSubstring("{{"));
 }
 
