@@ -22,6 +22,9 @@ test: build
 
 bench: build
 	tests/benchmarks/dfg_lut.sh $(BUILD)/pbrfit
+	tests/benchmarks/dfg_threads.sh $(BUILD)/pbrfit
+	tests/benchmarks/runtime_state.sh $(BUILD)/tests/pbrfit_runtime_probe
+	$(BUILD)/tests/bench_optimizers
 
 build: deps
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release
