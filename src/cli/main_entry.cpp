@@ -24,6 +24,10 @@ int main_entry(int argc, char** argv) {
                       "compute threads per rank (default: SLURM_CPUS_PER_TASK, else the machine's hardware threads "
                       "shared among the ranks on it)")
       ->check(CLI::Range(1, 4096));
+  run_cmd->add_option("--rank-timeout", run.rank_timeout,
+                      "seconds without a word from a rank (they send one every second) before it is taken for dead "
+                      "or hung and the job stops with a checkpoint (default 60)")
+      ->check(CLI::Range(2.0, 86400.0));
   auto* quiet_flag = run_cmd->add_flag("-q,--quiet", quiet, "log warnings and errors only");
   run_cmd->add_flag("-v,--verbose", verbose, "log details, from every rank")->excludes(quiet_flag);
 

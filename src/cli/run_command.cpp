@@ -17,6 +17,7 @@ namespace {
 runtime::RunSettings settings_for(const spec::JobSpec& job, const RunOptions& options, int ranks_on_node) {
   runtime::RunSettings s;
   s.threads = runtime::compute_threads(options.threads, ranks_on_node);
+  s.rank_timeout_seconds = options.rank_timeout;
   s.job_text = job.text;
   s.job_name = job.name;
   s.job_kind = job.kind;

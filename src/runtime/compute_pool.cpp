@@ -12,6 +12,7 @@ ComputePool::~ComputePool() { stop(); }
 void ComputePool::assign(WorkItemId id, std::shared_ptr<const Bytes> context, Bytes input) {
   {
     std::lock_guard lock(mutex_);
+    if (stopping_) return;
     queue_.push_back({id, std::move(context), std::move(input)});
   }
   work_ready_.notify_one();
@@ -37,7 +38,7 @@ void ComputePool::wait(std::chrono::microseconds timeout) {
   item_done_.wait_for(lock, timeout, [this] { return !finished_.empty() || failure_; });
 }
 
-void ComputePool::stop() {
+void ComputePool::cancel() {
   {
     std::lock_guard lock(mutex_);
     stopping_ = true;
@@ -45,6 +46,15 @@ void ComputePool::stop() {
   }
   cancelled_ = true;
   work_ready_.notify_all();
+}
+
+bool ComputePool::idle() const {
+  std::lock_guard lock(mutex_);
+  return running_ == 0;
+}
+
+void ComputePool::stop() {
+  cancel();
   for (auto& t : threads_)
     if (t.joinable()) t.join();
 }

@@ -41,8 +41,12 @@ class ComputePool {
   std::optional<std::string> failure() const;
   // Returns when an item finished or failed, or after `timeout`.
   void wait(std::chrono::microseconds timeout);
-  // Drops queued items, raises the cancel flag for running ones and joins the threads. Results that
-  // finished stay in take_finished().
+  // Drops queued items and raises the cancel flag for running ones (which may finish or give up); new
+  // items are refused from now on. Returns at once.
+  void cancel();
+  // Whether no item is running.
+  bool idle() const;
+  // cancel(), then joins the threads. Results that finished stay in take_finished().
   void stop();
 
  private:

@@ -10,6 +10,7 @@
 
 #include "checkpointer.hpp"
 #include "coordinator.hpp"
+#include "persistence.hpp"
 #include "existing_output.hpp"
 #include "pbrfit/core/error.hpp"
 #include "pbrfit/runtime/stop_signal.hpp"
@@ -92,21 +93,23 @@ Preparation prepare(const MpiSession& mpi, const Workload& workload, const RunSe
 int exit_code_of(Outcome outcome) {
   switch (outcome) {
     case Outcome::complete: return exit_success;
-    case Outcome::interrupted: return exit_interrupted;
+    case Outcome::interrupted:
+    case Outcome::lost_rank: return exit_interrupted;
     default: return exit_run_failure;
   }
 }
 
-int coordinate(const MpiSession& mpi, const Workload& workload, const RunSettings& s, Preparation& p,
+int coordinate(MpiSession& mpi, const Workload& workload, const RunSettings& s, Preparation& p,
                std::vector<int> threads) {
-  Coordinator coordinator(mpi, workload, s, *p.state, *p.checkpointer, *p.file, std::move(threads), p.elapsed_before);
+  Persistence persistence(s, workload, *p.state, *p.checkpointer, *p.file);
+  Coordinator coordinator(mpi, workload, s, *p.state, persistence, std::move(threads), p.elapsed_before);
   const Outcome outcome = coordinator.run();
-  if (outcome == Outcome::interrupted)
+  if (outcome == Outcome::interrupted || outcome == Outcome::lost_rank)
     spdlog::warn("interrupted: checkpoint saved to {}; continue with: pbrfit run <job> --resume",
                  store::checkpoint_path_for(s.output));
   if (outcome == Outcome::complete) spdlog::info("result: {}", s.output);
   const int code = exit_code_of(outcome);
-  coordinator.say_farewell(code);
+  if (!coordinator.say_farewell(code)) mpi.leave_without_finalize();
   return code;
 }
 
@@ -124,7 +127,7 @@ Preparation prepare_reporting(const MpiSession& mpi, const Workload& workload, c
 
 }  // namespace
 
-int run_workload(const MpiSession& mpi, const Workload& workload, const RunSettings& settings) {
+int run_workload(MpiSession& mpi, const Workload& workload, const RunSettings& settings) {
   install_stop_handlers();
   Preparation preparation;
   if (mpi.coordinator()) preparation = prepare_reporting(mpi, workload, settings);
@@ -133,7 +136,9 @@ int run_workload(const MpiSession& mpi, const Workload& workload, const RunSetti
   if (decision != proceed) return decision;
   std::vector<int> threads = mpi.gather_to_coordinator(settings.threads);
   if (mpi.coordinator()) return coordinate(mpi, workload, settings, preparation, std::move(threads));
-  return serve_as_worker(mpi, workload, settings.seed, settings.threads);
+  const WorkerEnd end = serve_as_worker(mpi, workload, settings);
+  if (end.coordinator_lost) mpi.leave_without_finalize();
+  return end.exit_code;
 }
 
 }  // namespace pbrfit::runtime

@@ -43,13 +43,15 @@ bool Outbox::drain(std::chrono::milliseconds timeout) {
 std::optional<Message> try_receive() {
   int waiting = 0;
   MPI_Status status;
-  MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &waiting, &status);
+  if (MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &waiting, &status) != MPI_SUCCESS)
+    throw RunError("MPI probe failed");
   if (!waiting) return std::nullopt;
   int size = 0;
   MPI_Get_count(&status, MPI_BYTE, &size);
   Message message{status.MPI_SOURCE, Tag(status.MPI_TAG), Bytes(std::size_t(size))};
-  MPI_Recv(message.payload.data(), size, MPI_BYTE, status.MPI_SOURCE, status.MPI_TAG, MPI_COMM_WORLD,
-           MPI_STATUS_IGNORE);
+  if (MPI_Recv(message.payload.data(), size, MPI_BYTE, status.MPI_SOURCE, status.MPI_TAG, MPI_COMM_WORLD,
+               MPI_STATUS_IGNORE) != MPI_SUCCESS)
+    throw RunError("MPI receive from rank " + std::to_string(status.MPI_SOURCE) + " failed");
   return message;
 }
 

@@ -8,6 +8,7 @@
 //   signalled                                    worker -> rank 0: the worker got a stop signal
 //   bye                                          worker -> rank 0: nothing more will come
 //   farewell  (i32 exit code)                    rank 0 -> worker, after bye: exit with this code
+//   heartbeat                                    either way, when nothing else was sent for a second
 // Messages from one sender to one receiver arrive in order, so every result a worker sent before `bye`
 // has been received once `bye` is. Sends never block: an Outbox keeps each payload until MPI is done.
 #include <mpi.h>
@@ -21,7 +22,7 @@
 
 namespace pbrfit::runtime {
 
-enum class Tag : int { stage = 1, work, stop, result, failed, signalled, bye, farewell };
+enum class Tag : int { stage = 1, work, stop, result, failed, signalled, bye, farewell, heartbeat };
 
 struct Message {
   int source = 0;
@@ -51,7 +52,8 @@ class Outbox {
   std::list<InFlight> in_flight_;
 };
 
-// A message from anyone if one is waiting.
+// A message from anyone if one is waiting. Errors are returned, not fatal (MpiSession sets
+// MPI_ERRORS_RETURN): a failed receive or send throws RunError instead of aborting every rank.
 std::optional<Message> try_receive();
 
 }  // namespace pbrfit::runtime

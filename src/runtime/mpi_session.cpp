@@ -14,6 +14,7 @@ MpiSession::MpiSession() {
   if (MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided) != MPI_SUCCESS)
     throw RunError("MPI initialization failed");
   if (provided < MPI_THREAD_FUNNELED) throw RunError("the MPI library lacks MPI_THREAD_FUNNELED support");
+  MPI_Comm_set_errhandler(MPI_COMM_WORLD, MPI_ERRORS_RETURN);
   MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
   MPI_Comm_size(MPI_COMM_WORLD, &size_);
   MPI_Comm node;
@@ -22,7 +23,9 @@ MpiSession::MpiSession() {
   MPI_Comm_free(&node);
 }
 
-MpiSession::~MpiSession() { MPI_Finalize(); }
+MpiSession::~MpiSession() {
+  if (finalize_) MPI_Finalize();
+}
 
 int MpiSession::broadcast_from_coordinator(int value) const {
   MPI_Bcast(&value, 1, MPI_INT, 0, MPI_COMM_WORLD);

@@ -1,5 +1,7 @@
 #include "remote_worker.hpp"
 
+#include <spdlog/spdlog.h>
+
 #include <deque>
 #include <memory>
 
@@ -8,6 +10,7 @@
 #include "messages.hpp"
 #include "pbrfit/core/error.hpp"
 #include "pbrfit/runtime/stop_signal.hpp"
+#include "peer_watch.hpp"
 #include "relay_tree.hpp"
 
 namespace pbrfit::runtime {
@@ -21,30 +24,44 @@ struct Assignment {
 
 class Worker {
  public:
-  Worker(const MpiSession& mpi, const Workload& workload, std::uint64_t seed, int threads)
-      : mpi_(mpi), pool_(workload, seed, threads) {}
+  Worker(const MpiSession& mpi, const Workload& workload, const RunSettings& settings)
+      : mpi_(mpi), settings_(settings), pool_(workload, settings.seed, settings.threads), peers_(1) {}
 
-  int serve() {
-    while (!stopped_) {
+  WorkerEnd serve() {
+    while (!stopped_ && !coordinator_lost()) {
       if (stop_requested() && !signalled_) {
-        outbox_.send(0, Tag::signalled);
+        send(Tag::signalled);
         signalled_ = idle_ = true;
       }
       const bool received = receive_all();
       const bool sent = send_finished();
-      outbox_.progress();
+      keep_alive();
       const auto pause = backoff_.next(received || sent);
       if (!received && !sent) pool_.wait(pause);
     }
-    return await_farewell();
+    if (stopped_) return await_farewell();
+    return give_up();
   }
 
  private:
+  void send(Tag tag, Bytes payload = {}) {
+    outbox_.send(0, tag, std::move(payload));
+    heartbeat_.sent();
+  }
+
+  void keep_alive() {
+    outbox_.progress();
+    if (heartbeat_.due()) send(Tag::heartbeat);
+  }
+
+  bool coordinator_lost() const { return peers_.silent_seconds(0) >= settings_.rank_timeout_seconds; }
+
   bool receive_all() {
     bool any = false;
     while (!stopped_) {
       auto message = try_receive();
       if (!message) break;
+      if (message->source == 0) peers_.heard(0);
       handle(*message);
       any = true;
     }
@@ -65,9 +82,8 @@ class Worker {
       waiting_.push_back(std::move(a));
       start_waiting();
     } else if (message.tag == Tag::stop) {
-      pool_.stop();
-      send_finished();
-      outbox_.send(0, Tag::bye);
+      finish_in_grace();
+      send(Tag::bye);
       stopped_ = true;
     }
   }
@@ -80,6 +96,16 @@ class Worker {
     }
   }
 
+  // Running items may still finish (or give up) within the grace; their results go to rank 0.
+  void finish_in_grace() {
+    pool_.cancel();
+    const auto grace = std::chrono::duration<double>(settings_.stop_grace_seconds / 2);
+    const auto deadline =
+        std::chrono::steady_clock::now() + std::chrono::duration_cast<std::chrono::steady_clock::duration>(grace);
+    while (!pool_.idle() && std::chrono::steady_clock::now() < deadline) pool_.wait(std::chrono::milliseconds(1));
+    send_finished();
+  }
+
   bool send_finished() {
     bool any = false;
     for (auto& finished : pool_.take_finished()) {
@@ -87,36 +113,47 @@ class Worker {
       out.put(finished.id.stage);
       out.put(finished.id.item);
       out.put_bytes(finished.result);
-      outbox_.send(0, Tag::result, out.take());
+      send(Tag::result, out.take());
       any = true;
     }
     if (auto failure = pool_.failure(); failure && !reported_failure_) {
       ByteWriter out;
       out.put_string(*failure);
-      outbox_.send(0, Tag::failed, out.take());
+      send(Tag::failed, out.take());
       reported_failure_ = idle_ = true;
     }
     return any;
   }
 
-  int await_farewell() {
-    for (;;) {
-      outbox_.progress();
+  WorkerEnd await_farewell() {
+    while (!coordinator_lost()) {
+      keep_alive();
       if (auto message = try_receive()) {
+        if (message->source == 0) peers_.heard(0);
         if (message->tag == Tag::farewell) {
           ByteReader in(message->payload);
-          return in.get<std::int32_t>();
+          return {in.get<std::int32_t>(), false};
         }
         continue;  // late work or stages: nothing more is computed
       }
       pool_.wait(backoff_.next(false));
     }
+    return give_up();
+  }
+
+  WorkerEnd give_up() {
+    spdlog::error("rank 0 has sent nothing for {:.0f} s (it died or hangs): giving up", peers_.silent_seconds(0));
+    pool_.cancel();
+    return {exit_interrupted, true};
   }
 
   const MpiSession& mpi_;
+  const RunSettings& settings_;
   ComputePool pool_;
   Outbox outbox_;
   IdleBackoff backoff_;
+  PeerWatch peers_;  // only rank 0 is watched
+  HeartbeatClock heartbeat_;
   std::uint32_t stage_ = 0;
   std::shared_ptr<const Bytes> context_;
   std::deque<Assignment> waiting_;
@@ -125,8 +162,8 @@ class Worker {
 
 }  // namespace
 
-int serve_as_worker(const MpiSession& mpi, const Workload& workload, std::uint64_t seed, int threads) {
-  Worker worker(mpi, workload, seed, threads);
+WorkerEnd serve_as_worker(const MpiSession& mpi, const Workload& workload, const RunSettings& settings) {
+  Worker worker(mpi, workload, settings);
   return worker.serve();
 }
 

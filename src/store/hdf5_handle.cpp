@@ -28,6 +28,16 @@ void check(herr_t status, const std::string& what) {
   if (status < 0) throw RunError("HDF5: cannot " + what);
 }
 
+void close_file(Handle& file) {
+  const hid_t id = file.get();
+  file.release();
+  if (H5Fclose(id) >= 0) return;
+  // A failed close leaves the file in HDF5's table; evict it so the library never retries at exit.
+  while (H5Iis_valid(id) > 0 && H5Idec_ref(id) > 0) {
+  }
+  throw RunError("HDF5: cannot close (flush) the file");
+}
+
 void silence_error_stack() { H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); }
 
 Handle file_access() {

@@ -3,6 +3,7 @@
 #include <hdf5.h>
 
 #include <cstdint>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,7 @@ class Handle {
   Handle& operator=(Handle&& other) noexcept;
   ~Handle() { reset(); }
   void reset();
+  hid_t release() { return std::exchange(id_, H5I_INVALID_HID); }
   hid_t get() const { return id_; }
   bool valid() const { return id_ >= 0; }
   operator hid_t() const { return id_; }
@@ -49,6 +51,10 @@ bool has_attribute(hid_t object, const std::string& name);
 std::string read_string_attribute(hid_t object, const std::string& name);
 std::int64_t read_i64_attribute(hid_t object, const std::string& name);
 double read_f64_attribute(hid_t object, const std::string& name);
+
+// Closes a file, reporting failure (a close flushes; on a full disk it fails). HDF5 keeps no trace of
+// the file afterwards either way, so nothing is left for the library to flush at process exit.
+void close_file(Handle& file);
 
 // Silences HDF5's own error stack printing for this process (errors are reported as exceptions).
 void silence_error_stack();

@@ -4,7 +4,10 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <sys/sendfile.h>
+
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 
@@ -85,6 +88,19 @@ void PosixFile::write_all(std::span<const std::byte> content) {
   }
 }
 
+void PosixFile::copy_to(PosixFile& target) const {
+  const std::uint64_t total = size();
+  std::uint64_t done = 0;
+  off_t offset = 0;
+  while (done < total) {
+    const ssize_t n = ::sendfile(target.fd_, fd_, &offset, std::size_t(total - done));
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) fail("copy " + path_ + " to", target.path_);
+    if (n == 0) throw RunError("cannot copy " + path_ + ": it shrank while being copied");
+    done += std::uint64_t(n);
+  }
+}
+
 void PosixFile::truncate(std::uint64_t length) {
   if (::ftruncate(fd_, off_t(length)) != 0) fail("truncate", path_);
 }
@@ -110,6 +126,23 @@ void sync_directory_of(const std::string& path) {
   if (fd < 0) return;  // the rename is done; a directory we cannot open cannot be synced
   ::fsync(fd);
   ::close(fd);
+}
+
+void copy_then_rename(const std::string& from, const std::string& to) {
+  const std::string temporary = to + ".tmp";
+  try {
+    const PosixFile source = PosixFile::open_for_reading(from);
+    PosixFile target = PosixFile::create(temporary);
+    source.copy_to(target);
+    target.close();
+    if (std::rename(temporary.c_str(), to.c_str()) != 0) fail("rename over", to);
+  } catch (const InputError& e) {
+    std::remove(temporary.c_str());
+    throw RunError(e.what());
+  } catch (...) {
+    std::remove(temporary.c_str());
+    throw;
+  }
 }
 
 }  // namespace pbrfit::store

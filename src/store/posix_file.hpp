@@ -26,6 +26,8 @@ class PosixFile {
   // Reads exactly `buffer.size()` bytes from `offset`; false if the file ends first.
   bool read_at(std::uint64_t offset, std::span<std::byte> buffer) const;
   void write_all(std::span<const std::byte> content);
+  // Appends this whole file to `target` (in the kernel, without a copy through user space).
+  void copy_to(PosixFile& target) const;
   void truncate(std::uint64_t length);
   void seek_to_end();
   void sync();
@@ -43,5 +45,9 @@ std::string os_reason();
 
 // fsyncs the directory holding `path`, so that a rename or creation in it is durable.
 void sync_directory_of(const std::string& path);
+
+// Copies `from` to `to` + ".tmp" and renames that over `to`: readers of `to` see the old or the new
+// content, never a partial copy. On failure `to` is untouched, the temporary removed, RunError thrown.
+void copy_then_rename(const std::string& from, const std::string& to);
 
 }  // namespace pbrfit::store

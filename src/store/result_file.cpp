@@ -3,10 +3,12 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cstdio>
 #include <ctime>
 
 #include "hdf5_handle.hpp"
 #include "pbrfit/core/version.hpp"
+#include "pbrfit/core/error.hpp"
 #include "posix_file.hpp"
 #include "table_creation.hpp"
 #include "table_writer.hpp"
@@ -60,27 +62,36 @@ void write_run_info(hid_t file, const RunInfo& info) {
 }  // namespace
 
 ResultFile::ResultFile(std::string path, ResultLayout layout, const RunInfo& info)
-    : path_(std::move(path)), layout_(std::move(layout)) {
+    : path_(std::move(path)), working_(path_ + ".writing"), layout_(std::move(layout)) {
   h5::silence_error_stack();
   Handle fapl = h5::file_access();
   check(H5Pset_libver_bounds(fapl, H5F_LIBVER_V110, H5F_LIBVER_LATEST), "set file format");
-  Handle file(check(H5Fcreate(path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl), "create " + path_), H5Fclose);
+  PosixFile::create(working_).close();  // reports a missing or read-only directory with the OS's reason
+  Handle file(check(H5Fcreate(working_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl), "create " + working_), H5Fclose);
   write_run_info(file, info);
   write_progress(file, Progress{});
   for (const auto& group : layout_.groups) create_group(file, group);
+  h5::close_file(file);
 }
 
 void ResultFile::write(std::vector<Block> blocks, const Progress& progress) {
-  Handle file = h5::open_file(path_, true);
+  Handle file = h5::open_file(working_, true);
   write_blocks(file, layout_, std::move(blocks));
   write_progress(file, progress);
-  check(H5Fflush(file, H5F_SCOPE_GLOBAL), "flush " + path_);
+  check(H5Fflush(file, H5F_SCOPE_GLOBAL), "flush " + working_);
+  h5::close_file(file);
 }
 
-void ResultFile::sync_to_disk() const {
-  PosixFile file = PosixFile::open_for_writing(path_);
+void ResultFile::publish() { copy_then_rename(working_, path_); }
+
+void ResultFile::complete() {
+  PosixFile file = PosixFile::open_for_writing(working_);
   file.sync();
   file.close();
+  if (std::rename(working_.c_str(), path_.c_str()) != 0)
+    throw RunError("cannot rename " + working_ + " to " + path_ + ": " + os_reason());
+  sync_directory_of(path_);
 }
+
 
 }  // namespace pbrfit::store

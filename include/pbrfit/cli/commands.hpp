@@ -14,6 +14,7 @@ struct RunOptions {
   bool resume = false;
   bool force = false;
   int threads = 0;     // compute threads per rank; 0: see runtime/compute_threads.hpp
+  double rank_timeout = 60.0;  // seconds of silence after which a rank is taken for dead or hung
   runtime::Verbosity verbosity = runtime::Verbosity::normal;
 };
 

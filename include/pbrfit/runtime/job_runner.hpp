@@ -23,10 +23,11 @@ struct RunSettings {
   double flush_interval_seconds = 1.0;     // how often finished results reach the result file
   double progress_interval_seconds = 3.0;  // how often progress is logged
   double stop_grace_seconds = 5.0;         // how long rank 0 waits for the other ranks when stopping
+  double rank_timeout_seconds = 60.0;      // a rank silent this long is taken for dead or hung
 };
 
 // Collective: every rank calls it and every rank that is still alive returns the same exit code
-// (see core/error.hpp).
-int run_workload(const MpiSession& mpi, const Workload& workload, const RunSettings& settings);
+// (see core/error.hpp). After a rank was lost, the session is told to leave without MPI_Finalize.
+int run_workload(MpiSession& mpi, const Workload& workload, const RunSettings& settings);
 
 }  // namespace pbrfit::runtime

@@ -1,6 +1,7 @@
 #pragma once
 // The MPI environment of one process: initialized once (MPI_THREAD_FUNNELED: only the main thread calls
-// MPI; compute threads never do), finalized on destruction.
+// MPI; compute threads never do), finalized on destruction. MPI errors are returned, not fatal, so a
+// dead peer is an error pbrfit reports, not an abort that skips the checkpoint.
 #include <vector>
 
 namespace pbrfit::runtime {
@@ -17,6 +18,10 @@ class MpiSession {
   int ranks_on_this_node() const { return local_size_; }
   bool coordinator() const { return rank_ == 0; }
 
+  // After a rank was lost: the process ends without MPI_Finalize (which would wait for the lost rank);
+  // the launcher then ends the others.
+  void leave_without_finalize() { finalize_ = false; }
+
   // Collective. Every rank returns rank 0's value.
   int broadcast_from_coordinator(int value) const;
   // Collective. Rank 0 gets every rank's value (by rank); the others get an empty vector.
@@ -26,6 +31,7 @@ class MpiSession {
   int rank_ = 0;
   int size_ = 1;
   int local_size_ = 1;
+  bool finalize_ = true;
 };
 
 // The rank this process will have, read from the launcher's environment before MPI starts

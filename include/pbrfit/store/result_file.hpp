@@ -1,7 +1,9 @@
 #pragma once
-// The HDF5 result file of one job, owned by rank 0. Blocks are written in batches, each by opening the
-// file, writing and closing it again: between batches the file on disk is complete and consistent, so
-// h5dump, h5py and `pbrfit status` can read it while the job runs.
+// The HDF5 result file of one job, owned by rank 0. Readers never see it being written: blocks go into a
+// working copy (R.h5.writing) and publish() copies that to R.h5.tmp and renames it over R.h5, so at every
+// instant R.h5 is a complete, consistent file that h5dump, h5py and `pbrfit status` open with their
+// defaults, and a kill during a write can damage only the working copy (which a resume rebuilds).
+// complete() renames the working copy into place without a copy.
 //
 // Root attributes: pbrfit_version, job_name, job_kind, job_yaml, seed, ranks, threads, state
 // (running | complete | interrupted | failed), started_utc, finished_utc, items_done, items_total,
@@ -37,21 +39,25 @@ struct Progress {
 
 class ResultFile {
  public:
-  // Creates (truncating) the file with every group, axis and (empty, extendible) table of the layout.
+  // Creates (truncating) the working copy with every group, axis and (empty, extendible) table of the
+  // layout. R.h5 itself is untouched until the first publish().
   ResultFile(std::string path, ResultLayout layout, const RunInfo& info);
 
-  // Writes the blocks (every table opened once, touching blocks merged) and the progress attributes;
-  // throws RunError on I/O failure. Blocks of growing tables must carry their final rows.
+  // Writes the blocks (every table opened once, touching blocks merged) and the progress attributes
+  // into the working copy; throws RunError on I/O failure. Blocks of growing tables carry their rows.
   void write(std::vector<Block> blocks, const Progress& progress);
-
-  // fsyncs the file: once it returns, what was written survives a crash of this machine.
-  void sync_to_disk() const;
+  // Makes the working copy what readers of R.h5 see. Throws RunError (R.h5 keeps its previous content).
+  void publish();
+  // The last write becomes R.h5 for good: fsynced, renamed into place, the directory synced.
+  void complete();
 
   const std::string& path() const { return path_; }
+  const std::string& working_path() const { return working_; }
   const ResultLayout& layout() const { return layout_; }
 
  private:
   std::string path_;
+  std::string working_;
   ResultLayout layout_;
 };
 

@@ -9,8 +9,8 @@ namespace pbrfit::testing {
 namespace {
 
 // MPI is initialized once per process: every test shares this singleton session.
-const runtime::MpiSession& session() {
-  static const runtime::MpiSession mpi;
+runtime::MpiSession& session() {
+  static runtime::MpiSession mpi;
   static const bool quiet = (runtime::setup_logging(0, runtime::Verbosity::quiet), true);
   (void)quiet;
   return mpi;

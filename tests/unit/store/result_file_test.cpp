@@ -61,6 +61,7 @@ TEST_CASE("blocks land at their offsets; rows not yet written read as NaN; progr
   const auto path = temporary_path("result.h5");
   store::ResultFile file(path, grid_layout(), info());
   file.write({{"grid", "value", {2, 0}, {1, 2}, {5.0, 6.0}, {}}, {"grid", "per_row", {2}, {1}, {9.0}, {}}}, progress(1));
+  file.publish();
 
   std::vector<std::uint64_t> dims;
   const auto values = store::read_table(path, "grid/value", &dims);
@@ -83,6 +84,7 @@ TEST_CASE("blocks land at their offsets; rows not yet written read as NaN; progr
   CHECK(s.scheduler_job == "slurm job 7, restart 1");
 
   file.write({{"grid", "value", {0, 0}, {2, 2}, {1, 2, 3, 4}, {}}}, progress(3, "complete"));
+  file.publish();
   CHECK(store::read_table(path, "grid/value") == std::vector<double>{1, 2, 3, 4, 5, 6});
   CHECK(store::read_result_summary(path).state == "complete");
   CHECK(store::read_table(path, "grid/row") == std::vector<double>{0.0, 0.5, 1.0});
@@ -94,6 +96,7 @@ TEST_CASE("a table written cell by cell, out of order, in one batch holds every 
   std::vector<store::Block> cells;
   for (std::uint64_t i : {5, 0, 3, 1, 4, 2}) cells.push_back({"grid", "value", {i / 2, i % 2}, {1, 1}, {double(i)}, {}});
   file.write(cells, progress(3));
+  file.publish();
   CHECK(store::read_table(path, "grid/value") == std::vector<double>{0, 1, 2, 3, 4, 5});
 }
 
@@ -109,6 +112,7 @@ TEST_CASE("tables keep their declared types: float32, integers, texts, records a
               {"typed", "members", {0}, {2}, {3, 0.5, 5, 0.25}, {"x + y", "sin(x) * y + 1"}},
               {"typed", "log", {0, 0}, {1, 3}, {1, 2, 3}, {}}},
              progress(1));
+  file.publish();
   const auto single = store::read_table(path, "typed/single");
   for (int i = 0; i < 12; ++i) CHECK(single[i] == double(float(0.1 * i)));
   const auto counts = store::read_table(path, "typed/counts");
@@ -118,9 +122,32 @@ TEST_CASE("tables keep their declared types: float32, integers, texts, records a
   CHECK(store::read_text_table(path, "typed/names") == std::vector<std::string>{"", "", "two", "three"});
 
   file.write({{"typed", "log", {1, 0}, {2, 3}, {4, 5, 6, 7, 8, 9}, {}}}, progress(2));
+  file.publish();
   std::vector<std::uint64_t> dims;
   CHECK(store::read_table(path, "typed/log", &dims) == std::vector<double>{1, 2, 3, 4, 5, 6, 7, 8, 9});
   CHECK(dims == std::vector<std::uint64_t>{3, 3});
+}
+
+TEST_CASE("readers see only published states: the result file is replaced whole, never written in place") {
+  const auto path = temporary_path("published.h5");
+  std::filesystem::remove(path);
+  store::ResultFile file(path, grid_layout(), info());
+  CHECK_FALSE(std::filesystem::exists(path));
+  file.write({{"grid", "per_row", {0}, {1}, {1.0}, {}}}, progress(1));
+  CHECK_FALSE(std::filesystem::exists(path));
+  file.publish();
+  CHECK(store::read_table(path, "grid/per_row")[0] == 1.0);
+  file.write({{"grid", "per_row", {1}, {1}, {2.0}, {}}}, progress(2));
+  CHECK(store::read_table(path, "grid/per_row").size() == 1);  // the second write is not published yet
+  file.complete();
+  CHECK(store::read_table(path, "grid/per_row") == std::vector<double>{1.0, 2.0});
+  CHECK_FALSE(std::filesystem::exists(file.working_path()));
+  CHECK_FALSE(std::filesystem::exists(path + ".tmp"));
+}
+
+TEST_CASE("a result file in a directory that cannot be written is refused with the reason") {
+  REQUIRE_THROWS_WITH(store::ResultFile("/proc/pbrfit-no/result.h5", grid_layout(), info()),
+                      Catch::Matchers::ContainsSubstring("cannot create /proc/pbrfit-no/result.h5.writing: No such file"));
 }
 
 TEST_CASE("a block that does not fit its table's declaration is a logic error, not a silent write") {
