@@ -5,6 +5,7 @@
 #include <exception>
 
 #include "pbrfit/core/error.hpp"
+#include "pbrfit/core/quoted_text.hpp"
 
 namespace pbrfit::cli {
 
@@ -16,7 +17,7 @@ int exit_on_error(Body&& body, bool report = true) {
     if (report) std::fprintf(stderr, "%s\n", e.what());
     return exit_invalid_input;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "pbrfit: error: %s\n", e.what());
+    std::fprintf(stderr, "pbrfit: error: %s\n", one_line(e.what()).c_str());
     return exit_run_failure;
   }
 }

@@ -5,6 +5,7 @@
 #include "exit_on_error.hpp"
 #include "pbrfit/cli/commands.hpp"
 #include "pbrfit/core/error.hpp"
+#include "pbrfit/core/quoted_text.hpp"
 #include "pbrfit/jobs/job_kinds.hpp"
 #include "pbrfit/runtime/compute_threads.hpp"
 #include "pbrfit/runtime/job_runner.hpp"
@@ -46,6 +47,13 @@ int run_validated(const spec::JobSpec& job, const runtime::Workload& workload, c
   return runtime::run_workload(mpi, workload, settings);
 }
 
+void check_output_option(const std::string& output) {
+  if (output.empty()) return;
+  if (has_control_character(output))
+    throw InputError({"--output"}, "must not contain control characters (such as NUL or a newline), got " + quote(output));
+  if (!output.ends_with(".h5")) throw InputError({"--output"}, "must end in .h5, got " + quote(output));
+}
+
 }  // namespace
 
 int run_command(const RunOptions& options) {
@@ -53,6 +61,7 @@ int run_command(const RunOptions& options) {
   const bool reporter = runtime::launcher_rank() == 0;
   return exit_on_error(
       [&] {
+        check_output_option(options.output);
         const auto job = spec::load_job_file(options.job_file, jobs::kind_catalogue());
         const auto workload = jobs::make_workload(job);
         return run_validated(job, *workload, options);

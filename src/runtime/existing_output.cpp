@@ -37,9 +37,23 @@ std::optional<store::ResultSummary> existing_result(const RunSettings& s, bool h
   }
 }
 
+// pbrfit reads and replaces only regular files: a FIFO, device or directory at one of its paths would
+// block a read or be replaced.
+void require_regular_or_absent(const std::string& path) {
+  std::error_code error;
+  const auto status = std::filesystem::status(path, error);
+  if (error || status.type() == std::filesystem::file_type::not_found) return;
+  if (status.type() == std::filesystem::file_type::directory) throw InputError({path}, "is a directory, not a file");
+  if (status.type() != std::filesystem::file_type::regular)
+    throw InputError({path}, "is not a regular file (pbrfit reads and writes only regular files)");
+}
+
 }  // namespace
 
 ExistingOutput inspect_existing_output(const RunSettings& s) {
+  for (const auto& path : {s.output, store::checkpoint_path_for(s.output), store::journal_path_for(s.output),
+                           s.output + ".writing"})
+    require_regular_or_absent(path);
   ExistingOutput found;
   auto checkpoint = existing_checkpoint(s);
   if (checkpoint && checkpoint->state.job_text != s.job_text) {

@@ -15,6 +15,7 @@
 #include "pbrfit/core/error.hpp"
 #include "pbrfit/runtime/stop_signal.hpp"
 #include "pbrfit/store/block_journal.hpp"
+#include "pbrfit/store/output_lock.hpp"
 #include "remote_worker.hpp"
 #include "resumption.hpp"
 
@@ -32,6 +33,7 @@ struct Preparation {
   std::unique_ptr<RunState> state = {};
   std::unique_ptr<store::ResultFile> file = {};
   std::optional<Checkpointer> checkpointer = {};
+  std::unique_ptr<store::OutputLock> lock = {};
   double elapsed_before = 0.0;
 };
 
@@ -44,8 +46,6 @@ std::string scheduler_job() {
 
 std::unique_ptr<store::ResultFile> create_result_file(const MpiSession& mpi, const Workload& workload,
                                                       const RunSettings& s) {
-  const auto parent = std::filesystem::path(s.output).parent_path();
-  if (!parent.empty()) std::filesystem::create_directories(parent);
   store::RunInfo info{s.job_name, s.job_kind, s.job_text, s.seed, mpi.size(), s.threads, store::utc_now_iso8601(),
                       scheduler_job()};
   return std::make_unique<store::ResultFile>(s.output, workload.layout(), info);
@@ -68,8 +68,17 @@ void resume_from(Preparation& p, store::CheckpointReading checkpoint, const MpiS
   p.checkpointer = Checkpointer::resume(s.output, s.job_text, journal_length, checkpoint.valid_length);
 }
 
+void create_output_directory(const std::string& output) {
+  const auto parent = std::filesystem::path(output).parent_path();
+  std::error_code error;
+  if (!parent.empty()) std::filesystem::create_directories(parent, error);
+  if (error) throw RunError("cannot create the directory " + parent.string() + ": " + error.message());
+}
+
 Preparation prepare(const MpiSession& mpi, const Workload& workload, const RunSettings& s) {
   Preparation p;
+  create_output_directory(s.output);
+  p.lock = std::make_unique<store::OutputLock>(s.output);
   auto existing = inspect_existing_output(s);
   if (existing.complete) {
     spdlog::info("{} is already complete; nothing to do", s.output);
@@ -81,12 +90,12 @@ Preparation prepare(const MpiSession& mpi, const Workload& workload, const RunSe
     resume_from(p, std::move(*existing.checkpoint), mpi, workload, s);
     return p;
   }
-  if (s.resume) spdlog::info("no checkpoint to resume from: starting from the beginning");
-  if (existing.discards_checkpoint)
-    spdlog::warn("starting over: the existing checkpoint is discarded (use --resume to continue from it)");
   p.state = std::make_unique<RunState>(workload, *p.codec);
   p.file = create_result_file(mpi, workload, s);
   p.checkpointer = Checkpointer::start(s.output, s.job_text, *p.state);
+  if (s.resume) spdlog::info("no checkpoint to resume from: starting from the beginning");
+  if (existing.discards_checkpoint)
+    spdlog::warn("starting over: the existing checkpoint was discarded (use --resume to continue from one)");
   return p;
 }
 
@@ -107,7 +116,10 @@ int coordinate(MpiSession& mpi, const Workload& workload, const RunSettings& s, 
   if (outcome == Outcome::interrupted || outcome == Outcome::lost_rank)
     spdlog::warn("interrupted: checkpoint saved to {}; continue with: pbrfit run <job> --resume",
                  store::checkpoint_path_for(s.output));
-  if (outcome == Outcome::complete) spdlog::info("result: {}", s.output);
+  if (outcome == Outcome::complete) {
+    p.lock->remove_file();
+    spdlog::info("result: {}", s.output);
+  }
   const int code = exit_code_of(outcome);
   if (!coordinator.say_farewell(code)) mpi.leave_without_finalize();
   return code;

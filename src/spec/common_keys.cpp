@@ -55,9 +55,9 @@ std::string checked_name(const Section& job) {
   const std::string& name = job.get_string("name");
   if (name.empty()) job.reject("name", "must not be empty");
   if (!std::isalnum(static_cast<unsigned char>(name.front())))
-    job.reject("name", "must start with a letter or a digit, got " + quoted(name));
+    job.reject("name", "must start with a letter or a digit, got " + quote(name));
   if (!std::ranges::all_of(name, is_name_character)) {
-    job.reject("name", "may contain only letters, digits, '.', '_' and '-', got " + quoted(name));
+    job.reject("name", "may contain only letters, digits, '.', '_' and '-', got " + quote(name));
   }
   if (name.size() > max_name_length) {
     job.reject("name", "must be at most " + std::to_string(max_name_length) + " characters long, got " +
@@ -70,7 +70,9 @@ std::string checked_output(const Section& job, const std::string& name) {
   if (!job.has("output")) return "results/" + name + ".h5";
   const std::string& output = job.get_string("output");
   if (output.empty()) job.reject("output", "must not be empty");
-  if (!output.ends_with(".h5")) job.reject("output", "must end in .h5, got " + quoted(output));
+  if (has_control_character(output))
+    job.reject("output", "must not contain control characters (such as NUL or a newline), got " + quote(output));
+  if (!output.ends_with(".h5")) job.reject("output", "must end in .h5, got " + quote(output));
   return output;
 }
 
@@ -84,9 +86,9 @@ Resources read_resources(const Section& resources) {
   const std::optional<std::int64_t> seconds = parse_slurm_time_limit(time_limit);
   if (!seconds) {
     resources.reject("time_limit", std::string("must be a Slurm time limit (") + time_limit_forms +
-                                       "), got " + quoted(time_limit));
+                                       "), got " + quote(time_limit));
   }
-  if (*seconds == 0) resources.reject("time_limit", "must be longer than zero, got " + quoted(time_limit));
+  if (*seconds == 0) resources.reject("time_limit", "must be longer than zero, got " + quote(time_limit));
   return Resources{.ranks = static_cast<int>(resources.get_int("ranks")),
                    .threads = static_cast<int>(resources.get_int("threads")),
                    .time_limit = time_limit,

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "common_keys.hpp"
+#include "job_file_text.hpp"
 #include "message_text.hpp"
 #include "yaml_document.hpp"
 #include "yaml_validation.hpp"
@@ -44,12 +45,12 @@ void check_kind_sections(const YAML::Node& root, const KindKey& kind, const Kind
       has_own_section = true;
     } else if (std::ranges::find(kinds.names, key) != kinds.names.end() && !common_schema().find(key)) {
       throw InputError(source.position(pair.first.Mark()),
-                       "section " + quoted(key) + " does not belong to a job of kind " + quoted(kind.name));
+                       "section " + quote(key) + " does not belong to a job of kind " + quote(kind.name));
     }
   }
   if (!has_own_section) {
     throw InputError(kind.where,
-                     "missing required section " + quoted(kind.name) + " for kind " + quoted(kind.name));
+                     "missing required section " + quote(kind.name) + " for kind " + quote(kind.name));
   }
 }
 
@@ -57,21 +58,6 @@ Schema job_schema(const std::string& kind, const KindCatalogue& kinds) {
   Schema schema = common_schema();
   schema.section(kind, kinds.schema_for(kind), "The settings of a " + kind + " job.").require();
   return schema;
-}
-
-[[noreturn]] void reject_unreadable(const std::string& path, int error_number) {
-  throw InputError(SourcePosition{path}, "cannot read job file: " + std::string(std::strerror(error_number)));
-}
-
-std::string read_file(const std::string& path) {
-  const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"), std::fclose);
-  if (!file) reject_unreadable(path, errno);
-  std::string text;
-  char buffer[1 << 16];
-  std::size_t count = 0;
-  while ((count = std::fread(buffer, 1, sizeof buffer, file.get())) > 0) text.append(buffer, count);
-  if (std::ferror(file.get())) reject_unreadable(path, errno);
-  return text;
 }
 
 }  // namespace
@@ -93,7 +79,7 @@ JobSpec parse_job_text(const std::string& text, const std::string& file, const K
 }
 
 JobSpec load_job_file(const std::string& path, const KindCatalogue& kinds) {
-  return parse_job_text(read_file(path), path, kinds);
+  return parse_job_text(read_job_file_text(path), path, kinds);
 }
 
 }  // namespace pbrfit::spec

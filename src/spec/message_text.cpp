@@ -5,40 +5,6 @@
 #include <cstdio>
 
 namespace pbrfit::spec {
-namespace {
-
-constexpr std::size_t max_quoted_length = 60;
-
-void append_escaped(std::string& out, char c) {
-  switch (c) {
-    case '\n': out += "\\n"; return;
-    case '\r': out += "\\r"; return;
-    case '\t': out += "\\t"; return;
-    default: break;
-  }
-  if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) {
-    char escaped[8];
-    std::snprintf(escaped, sizeof escaped, "\\x%02x", static_cast<unsigned char>(c));
-    out += escaped;
-  } else {
-    out += c;
-  }
-}
-
-}  // namespace
-
-std::string quoted(std::string_view text) {
-  std::string out = "'";
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    const bool starts_character = (static_cast<unsigned char>(text[i]) & 0xC0) != 0x80;  // UTF-8
-    if (i >= max_quoted_length && starts_character) {
-      out += "...";
-      break;
-    }
-    append_escaped(out, text[i]);
-  }
-  return out + "'";
-}
 
 std::string format_number(double value) {
   if (value == std::trunc(value) && std::fabs(value) < 1e15) {
@@ -95,7 +61,7 @@ bool in_range(const Field& field, double value) {
 
 std::string suggestion(const std::string& word, const std::vector<std::string>& candidates) {
   const std::string closest = closest_match(word, candidates);
-  return closest.empty() ? "" : "; did you mean " + quoted(closest) + "?";
+  return closest.empty() ? "" : "; did you mean " + quote(closest) + "?";
 }
 
 }  // namespace pbrfit::spec

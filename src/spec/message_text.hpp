@@ -4,13 +4,12 @@
 #include <string_view>
 #include <vector>
 
+#include "pbrfit/core/quoted_text.hpp"
 #include "pbrfit/spec/schema.hpp"
 
 namespace pbrfit::spec {
 
-// 'text' in single quotes, control characters escaped and long text shortened, so that a message
-// always stays on one line.
-std::string quoted(std::string_view text);
+using pbrfit::quote;  // core/quoted_text.hpp
 
 // Shortest natural form: integral values as integers ("65536"), others as %g ("0.5", "1e-06").
 std::string format_number(double value);

@@ -1,5 +1,6 @@
 #include "yaml_document.hpp"
 
+#include "yaml_quotes.hpp"
 #include <vector>
 
 namespace pbrfit::spec {
@@ -24,6 +25,7 @@ YAML::Node load_root_mapping(const YamlSource& source) {
     throw InputError(source.position(documents[1].Mark()), "a job file must hold a single YAML document");
   }
   const YAML::Node& root = documents.front();
+  reject_unclosed_quotes(root, source);
   if (!root.IsMap()) {
     throw InputError(source.position(root.Mark()), "a job file must be a mapping of keys to values");
   }

@@ -31,9 +31,9 @@ bool YamlSource::is_blank(const YAML::Node& node) const {
 std::string YamlSource::describe(const YAML::Node& value) const {
   if (value.IsMap()) return "a mapping";
   if (value.IsSequence()) return "a list";
-  if (value.IsScalar()) return quoted(value.Scalar());
+  if (value.IsScalar()) return quote(value.Scalar());
   const std::string written = null_text(value);
-  return written.empty() ? "an empty value" : quoted(written);
+  return written.empty() ? "an empty value" : quote(written);
 }
 
 SourcePosition YamlSource::value_position(const YAML::Node& key, const YAML::Node& value) const {

@@ -22,13 +22,13 @@ std::string child_path(const std::string& path, const std::string& key) {
 
 [[noreturn]] void reject_wrong_type(const Field& field, const YAML::Node& key, const YAML::Node& value,
                                     const YamlSource& source) {
-  reject_value(source.value_position(key, value), quoted(field.name), type_requirement(field),
+  reject_value(source.value_position(key, value), quote(field.name), type_requirement(field),
                source.describe(value));
 }
 
 void check_range(const Field& field, const std::string& subject, double value, const std::string& written,
                  const SourcePosition& where) {
-  if (!in_range(field, value)) reject_value(where, subject, range_requirement(field), written);
+  if (!in_range(field, value)) reject_value(where, subject, range_requirement(field), shortened(written));
 }
 
 // An integer written at value; subject names it in messages ("'seed'", "'resolution' item 2").
@@ -39,7 +39,7 @@ std::int64_t checked_integer(const Field& field, const std::string& subject, con
   if (!integer) {
     const bool too_long = value.IsScalar() && has_integer_syntax(value.Scalar());
     reject_value(where, subject, too_long ? "an integer that fits in 64 bits" : "an integer",
-                 too_long ? value.Scalar() : source.describe(value));
+                 too_long ? shortened(value.Scalar()) : source.describe(value));
   }
   check_range(field, subject, static_cast<double>(*integer), value.Scalar(), where);
   return *integer;
@@ -49,7 +49,7 @@ double checked_number(const Field& field, const YAML::Node& key, const YAML::Nod
                       const YamlSource& source) {
   const std::optional<double> number = value.IsScalar() ? parse_number(value.Scalar()) : std::nullopt;
   if (!number) reject_wrong_type(field, key, value, source);
-  check_range(field, quoted(field.name), *number, value.Scalar(), source.position(value.Mark()));
+  check_range(field, quote(field.name), *number, value.Scalar(), source.position(value.Mark()));
   return *number;
 }
 
@@ -76,7 +76,7 @@ std::string checked_choice(const Field& field, const YAML::Node& key, const YAML
     }
   }
   const std::string hint = value.IsScalar() ? suggestion(value.Scalar(), field.choices) : "";
-  throw InputError(source.value_position(key, value), quoted(field.name) + " must be " +
+  throw InputError(source.value_position(key, value), quote(field.name) + " must be " +
                                                           type_requirement(field) + "; got " +
                                                           source.describe(value) + hint);
 }
@@ -90,13 +90,13 @@ std::vector<std::int64_t> checked_integer_list(const Field& field, const YAML::N
                                                const YAML::Node& value, const YamlSource& source) {
   if (!value.IsSequence()) reject_wrong_type(field, key, value, source);
   if (value.size() < field.list_min || value.size() > field.list_max) {
-    reject_value(source.position(value.Mark()), quoted(field.name), type_requirement(field),
+    reject_value(source.position(value.Mark()), quote(field.name), type_requirement(field),
                  count_of_items(value.size()));
   }
   std::vector<std::int64_t> integers;
   for (std::size_t i = 0; i < value.size(); ++i) {
     const YAML::Node item = value[i];
-    const std::string subject = quoted(field.name) + " item " + std::to_string(i + 1);
+    const std::string subject = quote(field.name) + " item " + std::to_string(i + 1);
     integers.push_back(checked_integer(field, subject, item, source.position(item.Mark()), source));
   }
   return integers;
@@ -107,7 +107,7 @@ Scalar checked_scalar(const Field& field, const YAML::Node& key, const YAML::Nod
   switch (field.type) {
     case FieldType::boolean: return checked_boolean(field, key, value, source);
     case FieldType::integer:
-      return checked_integer(field, quoted(field.name), value, source.value_position(key, value), source);
+      return checked_integer(field, quote(field.name), value, source.value_position(key, value), source);
     case FieldType::number: return checked_number(field, key, value, source);
     case FieldType::string: return checked_string(field, key, value, source);
     case FieldType::choice: return checked_choice(field, key, value, source);
@@ -124,7 +124,7 @@ Scalar checked_scalar(const Field& field, const YAML::Node& key, const YAML::Nod
   std::string hint = suggestion(key, valid_keys);
   if (hint.empty()) hint = "; valid keys: " + join(valid_keys);
   throw InputError(source.position(key_node.Mark()),
-                   "unknown key " + quoted(key) + " in " + quoted(display_path(path)) + hint);
+                   "unknown key " + quote(key) + " in " + quote(display_path(path)) + hint);
 }
 
 // The section an absent key stands for: all defaults, or nullopt when a required key has none.
@@ -146,8 +146,8 @@ std::optional<Section> defaulted_section(const Schema& schema, const SourcePosit
 
 void fill_absent_field(Section& section, const Field& field, const std::string& path) {
   if (field.required) {
-    throw InputError(section.position(), "missing required key " + quoted(field.name) + " in " +
-                                             quoted(display_path(path)));
+    throw InputError(section.position(), "missing required key " + quote(field.name) + " in " +
+                                             quote(display_path(path)));
   }
   if (field.type == FieldType::section) {
     if (auto nested = defaulted_section(*field.nested, section.position())) {
@@ -193,7 +193,7 @@ class DuplicateKeyWalk {
     for (const YAML::Node& ancestor : ancestors_) {
       if (node.is(ancestor)) {
         throw InputError(source_.position(reached_at),
-                         "the value of " + quoted(display_path(path)) +
+                         "the value of " + quote(display_path(path)) +
                              " is an alias of a mapping or list that contains it");
       }
     }
@@ -209,7 +209,7 @@ class DuplicateKeyWalk {
       const std::string& key = pair.first.Scalar();
       if (!seen.insert(key).second) {
         throw InputError(source_.position(pair.first.Mark()),
-                         "duplicate key " + quoted(key) + " in " + quoted(display_path(path)));
+                         "duplicate key " + quote(key) + " in " + quote(display_path(path)));
       }
       walk(pair.second, child_path(path, key), pair.first.Mark());
     }
@@ -226,7 +226,7 @@ std::string display_path(const std::string& path) { return path.empty() ? "job" 
 
 std::string key_name(const YAML::Node& key, const std::string& path, const YamlSource& source) {
   if (!key.IsScalar()) {
-    throw InputError(source.position(key.Mark()), "a key in " + quoted(display_path(path)) +
+    throw InputError(source.position(key.Mark()), "a key in " + quote(display_path(path)) +
                                                       " must be a name, got " + source.describe(key));
   }
   return key.Scalar();

@@ -3,6 +3,7 @@
 #include <numeric>
 
 #include "hdf5_handle.hpp"
+#include "posix_file.hpp"
 #include "pbrfit/core/error.hpp"
 #include "pbrfit/store/result_file.hpp"
 
@@ -55,7 +56,7 @@ hsize_t element_count(const std::vector<hsize_t>& dims) {
 }  // namespace
 
 ResultSummary read_result_summary(const std::string& path) {
-  if (access(path.c_str(), R_OK) != 0) throw InputError({path}, "cannot read result file: no such file or no permission");
+  PosixFile::open_for_reading(path);  // a missing, unreadable or special file is refused before HDF5 opens it
   Handle file;
   try {
     file = h5::open_file(path, false);

@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "pbrfit/core/error.hpp"
+#include "pbrfit/core/quoted_text.hpp"
 
 namespace pbrfit::submit {
 
@@ -20,7 +21,7 @@ bool safe_for_directive(const std::string& text, const std::string& extra) {
 void require_safe(const spec::JobSpec& job, const std::string& what, const std::string& value,
                   const std::string& extra) {
   if (!safe_for_directive(value, extra))
-    throw InputError({job.file}, what + " '" + value + "' may contain only letters, digits and ._-" + extra +
+    throw InputError({job.file}, what + " " + quote(value) + " may contain only letters, digits and ._-" + extra +
                                      " to go into a Slurm batch script");
 }
 
@@ -58,7 +59,9 @@ BatchJob batch_job_for(const spec::JobSpec& job, const ResourceOverrides& overri
   b.time_limit_seconds = job.resources.time_limit_seconds;
   if (!overrides.time_limit.empty()) {
     const auto seconds = spec::parse_slurm_time_limit(overrides.time_limit);
-    if (!seconds) throw InputError({"--time"}, "'" + overrides.time_limit + "' is not a Slurm time limit");
+    if (!seconds) throw InputError({"--time"}, quote(overrides.time_limit) + " is not a Slurm time limit");
+    if (*seconds == 0)
+      throw InputError({"--time"}, quote(overrides.time_limit) + " is zero, which Slurm reads as no limit at all");
     b.time_limit_seconds = double(*seconds);
   }
   b.warning_seconds = warning_seconds_for(b.time_limit_seconds);

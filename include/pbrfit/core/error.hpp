@@ -37,6 +37,8 @@ class RunError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// "FILE:LINE:COL: error: MESSAGE" on one line: control characters in the file name and the message are
+// escaped (core/quoted_text.hpp).
 std::string format_error(const SourcePosition& where, const std::string& message);
 
 }  // namespace pbrfit

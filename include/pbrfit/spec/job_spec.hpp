@@ -50,7 +50,11 @@ struct KindCatalogue {
   std::function<const Schema&(const std::string& kind)> schema_for;
 };
 
-// Parses and validates; throws InputError (FILE:LINE:COL) on any problem, including unreadable files.
+// The largest job file pbrfit reads (256 KiB): job files describe work, they do not carry data.
+inline constexpr std::size_t max_job_file_bytes = std::size_t(256) << 10;
+
+// Parses and validates; throws InputError (FILE:LINE:COL) on any problem, including unreadable files,
+// files that are not regular files, and files larger than max_job_file_bytes.
 JobSpec load_job_file(const std::string& path, const KindCatalogue& kinds);
 JobSpec parse_job_text(const std::string& text, const std::string& file, const KindCatalogue& kinds);
 

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "pbrfit/core/error.hpp"
@@ -57,7 +58,22 @@ TEST_CASE("an unreadable job file") {
         missing + ": error: cannot read job file: No such file or directory");
   const std::string directory = scratch.path.string();
   CHECK(rejection([&] { load_job_file(directory, test_kinds()); }) ==
-        directory + ": error: cannot read job file: Is a directory");
+        directory + ": error: is a directory, not a job file");
+}
+
+TEST_CASE("only regular job files of bounded size are read") {
+  const ScratchDirectory scratch;
+  const std::string fifo = (scratch.path / "fifo.yaml").string();
+  REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+  CHECK(rejection([&] { load_job_file(fifo, test_kinds()); }) == fifo + ": error: is not a regular file");
+  CHECK(rejection([&] { load_job_file("/dev/zero", test_kinds()); }) == "/dev/zero: error: is not a regular file");
+  const std::string big = scratch.write("big.yaml", "name: dfg\nkind: lut\n" + std::string(300 << 10, '#'));
+  CHECK(rejection([&] { load_job_file(big, test_kinds()); }) ==
+        big + ": error: is larger than 256 KiB, the most a job file may hold");
+  const std::string head = "name: dfg\nkind: lut\nlut: {function: dfg}\n#";
+  const std::string at_limit =
+      scratch.write("limit.yaml", head + std::string(pbrfit::spec::max_job_file_bytes - head.size(), 'x'));
+  CHECK(load_job_file(at_limit, test_kinds()).text.size() == pbrfit::spec::max_job_file_bytes);
 }
 
 TEST_CASE("an empty job file") {
