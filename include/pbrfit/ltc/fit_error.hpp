@@ -1,0 +1,49 @@
+#pragma once
+// How far an LTC is from the target lobe rho, over the whole sphere (Heitz et al. 2016, section 4.1):
+//   cubed = integral of |D(l) - rho(l)|^3 dl     (the paper's fitting objective, not its cube root)
+//   l2    = sqrt(integral of (D(l) - rho(l))^2 dl)
+// estimated by multiple importance sampling of both distributions with the balance heuristic: `points`
+// directions drawn from the target and `points` drawn from the LTC, each sum term divided by
+// pdf_target + pdf_ltc. One golden lattice (point_sets.hpp) drives both strategies, and the LTC's samples
+// are normalize(M s) for fixed cosine samples s, so the estimate is a deterministic function of M,
+// continuous wherever it is finite.
+//
+// Invariants: the target's samples, values and densities are computed once, by the constructor; an estimate
+// allocates nothing and depends only on (target, points, LTC); both errors are >= 0.
+#include <cstddef>
+#include <vector>
+
+#include "pbrfit/ltc/distribution.hpp"
+#include "pbrfit/ltc/ggx_target.hpp"
+#include "pbrfit/ltc/vector.hpp"
+
+namespace pbrfit::ltc {
+
+struct FitError {
+  double cubed = 0.0;
+  double l2 = 0.0;
+};
+
+class FitErrorEstimator {
+ public:
+  FitErrorEstimator(const GgxTarget& target, std::size_t points);
+
+  double cubed_error(const LtcDistribution& ltc) const;
+  FitError errors(const LtcDistribution& ltc) const;
+  std::size_t points() const { return base_.size(); }
+
+ private:
+  struct TargetSample {
+    Vector3 direction;
+    double value;
+    double pdf;
+  };
+  template <class Accumulate>
+  void visit(const LtcDistribution& ltc, Accumulate&& accumulate) const;
+
+  GgxTarget target_;
+  std::vector<TargetSample> target_samples_;
+  std::vector<Vector3> base_;  // cosine samples the LTC transforms
+};
+
+}  // namespace pbrfit::ltc

@@ -1,0 +1,53 @@
+#pragma once
+// The sliced Wasserstein distance between an LTC and a set of target directions (Bonneel et al. 2015, the
+// loss of Kt et al. 2022 and of Nahmias 2022 for anisotropic LTC fits), with everything random held fixed:
+//   SW(M) = (1 / P) sum_p (1 / n) sum_i | sort_i(a_p . normalize(M s_k)) - sort_i(a_p . t_k) |
+// over P projection axes a_p and n base cosine samples s_k, one per target t_k. By default the axes are
+// axis_directions(P) and the samples are the cosine samples of golden_lattice(n) (point_sets.hpp), so SW is a
+// deterministic, continuous, piecewise-smooth function of M, unchanged by M -> c M for c > 0.
+//
+// gradient() is d SW / d M with the sorted pairing held fixed and d|x| / dx = sign(x) (0 at 0); it drives the
+// SGD baseline.
+//
+// Invariants: the targets' sorted projections are computed once, by the constructor; distance() and
+// gradient() allocate nothing (the object owns its scratch space, so it is not shared between threads);
+// targets and base samples are unit vectors, base samples have z > 0, and there is one base sample per target.
+// Each axis keeps the sample order of the previous call and re-sorts from it by insertion (an optimizer's
+// successive matrices are close, so few samples move); the values returned do not depend on that history.
+#include <cstddef>
+#include <span>
+#include <vector>
+
+#include "pbrfit/ltc/vector.hpp"
+
+namespace pbrfit::ltc {
+
+class SlicedWasserstein {
+ public:
+  explicit SlicedWasserstein(std::span<const Vector3> targets, std::size_t axis_count = 32);
+  SlicedWasserstein(std::span<const Vector3> targets, std::vector<Vector3> base, std::vector<Vector3> axes);
+
+  double distance(const Matrix3& m);
+  // SW(M), with d SW / d M written to `gradient`.
+  double gradient(const Matrix3& m, Matrix3& gradient);
+
+  std::span<const Vector3> base() const { return base_; }
+
+ private:
+  void transform_base(const Matrix3& m);
+  // Projects the transformed samples on axis p, in the order left by the previous call, and sorts by
+  // insertion: afterwards order(p) lists sample indices by increasing projection, projections_ the values.
+  void sort_projections(std::size_t p);
+  std::size_t* order(std::size_t p) { return orders_.data() + p * base_.size(); }
+
+  std::vector<Vector3> base_;
+  std::vector<Vector3> axes_;
+  std::vector<double> sorted_targets_;  // [axis][rank]
+  std::vector<Vector3> transformed_;    // normalize(M s_k)
+  std::vector<double> lengths_;         // |M s_k|
+  std::vector<double> projections_;     // sorted projections on the current axis
+  std::vector<std::size_t> orders_;     // [axis][rank]: sample indices by projection, from the last call
+  std::vector<bool> ordered_;           // per axis: whether orders_ comes from a previous call
+};
+
+}  // namespace pbrfit::ltc

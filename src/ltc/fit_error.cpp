@@ -1,0 +1,58 @@
+#include "pbrfit/ltc/fit_error.hpp"
+
+#include <cmath>
+
+#include "pbrfit/ltc/clamped_cosine.hpp"
+#include "pbrfit/ltc/point_sets.hpp"
+
+namespace pbrfit::ltc {
+
+FitErrorEstimator::FitErrorEstimator(const GgxTarget& target, std::size_t points) : target_(target) {
+  target_samples_.reserve(points);
+  base_.reserve(points);
+  for (const auto& [u1, u2] : golden_lattice(points)) {
+    const Vector3 l = target.sample(u1, u2);
+    const GgxTarget::Evaluation evaluation = target.evaluate(l);
+    target_samples_.push_back({l, evaluation.value, evaluation.pdf});
+    base_.push_back(sample_clamped_cosine(u1, u2));
+  }
+}
+
+// Calls accumulate(difference, pdf_target + pdf_ltc) once per sample of each strategy.
+template <class Accumulate>
+void FitErrorEstimator::visit(const LtcDistribution& ltc, Accumulate&& accumulate) const {
+  const double amplitude = ltc.amplitude();
+  for (const Vector3& base : base_) {
+    const LtcDistribution::Transformed sample = ltc.transform(base);
+    const GgxTarget::Evaluation target = target_.evaluate(sample.direction);
+    accumulate(target.value - amplitude * sample.pdf, target.pdf + sample.pdf);
+  }
+  for (const TargetSample& sample : target_samples_) {
+    const double pdf = ltc.pdf(sample.direction);
+    accumulate(sample.value - amplitude * pdf, sample.pdf + pdf);
+  }
+}
+
+double FitErrorEstimator::cubed_error(const LtcDistribution& ltc) const {
+  double sum = 0.0;
+  visit(ltc, [&](double difference, double pdf) {
+    const double magnitude = std::abs(difference);
+    if (pdf > 0.0) sum += magnitude * magnitude * magnitude / pdf;
+  });
+  return sum / static_cast<double>(points());
+}
+
+FitError FitErrorEstimator::errors(const LtcDistribution& ltc) const {
+  double cubed = 0.0;
+  double squared = 0.0;
+  visit(ltc, [&](double difference, double pdf) {
+    if (!(pdf > 0.0)) return;
+    const double magnitude = std::abs(difference);
+    cubed += magnitude * magnitude * magnitude / pdf;
+    squared += magnitude * magnitude / pdf;
+  });
+  const double count = static_cast<double>(points());
+  return {cubed / count, std::sqrt(squared / count)};
+}
+
+}  // namespace pbrfit::ltc

@@ -1,0 +1,106 @@
+#include "pbrfit/ltc/sliced_wasserstein.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <stdexcept>
+#include <utility>
+
+#include "pbrfit/ltc/clamped_cosine.hpp"
+#include "pbrfit/ltc/point_sets.hpp"
+
+namespace pbrfit::ltc {
+
+SlicedWasserstein::SlicedWasserstein(std::span<const Vector3> targets, std::size_t axis_count)
+    : SlicedWasserstein(targets, cosine_samples(targets.size()), axis_directions(axis_count)) {}
+
+SlicedWasserstein::SlicedWasserstein(std::span<const Vector3> targets, std::vector<Vector3> base,
+                                     std::vector<Vector3> axes)
+    : base_(std::move(base)), axes_(std::move(axes)) {
+  const std::size_t n = targets.size();
+  if (n == 0 || base_.size() != n || axes_.empty()) {
+    throw std::invalid_argument("ltc: sliced Wasserstein needs targets, one base sample per target, and axes");
+  }
+  sorted_targets_.resize(axes_.size() * n);
+  for (std::size_t p = 0; p < axes_.size(); ++p) {
+    const auto row = sorted_targets_.begin() + static_cast<std::ptrdiff_t>(p * n);
+    for (std::size_t k = 0; k < n; ++k) row[static_cast<std::ptrdiff_t>(k)] = axes_[p].dot(targets[k]);
+    std::sort(row, row + static_cast<std::ptrdiff_t>(n));
+  }
+  transformed_.resize(n);
+  lengths_.resize(n);
+  projections_.resize(n);
+  orders_.resize(axes_.size() * n);
+  ordered_.assign(axes_.size(), false);
+  for (std::size_t p = 0; p < axes_.size(); ++p) std::iota(order(p), order(p) + n, std::size_t{0});
+}
+
+void SlicedWasserstein::transform_base(const Matrix3& m) {
+  for (std::size_t k = 0; k < base_.size(); ++k) {
+    const Vector3 image = m * base_[k];
+    lengths_[k] = image.norm();
+    transformed_[k] = image / lengths_[k];
+  }
+}
+
+void SlicedWasserstein::sort_projections(std::size_t p) {
+  const Vector3& axis = axes_[p];
+  std::size_t* ranked = order(p);
+  const std::size_t n = base_.size();
+  if (!ordered_[p]) {  // no previous order to start from: sort from scratch once
+    for (std::size_t k = 0; k < n; ++k) projections_[k] = axis.dot(transformed_[k]);
+    std::sort(ranked, ranked + n, [&](std::size_t a, std::size_t b) { return projections_[a] < projections_[b]; });
+    ordered_[p] = true;
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t k = ranked[i];
+    const double value = axis.dot(transformed_[k]);
+    std::size_t j = i;
+    for (; j > 0 && projections_[j - 1] > value; --j) {
+      projections_[j] = projections_[j - 1];
+      ranked[j] = ranked[j - 1];
+    }
+    projections_[j] = value;
+    ranked[j] = k;
+  }
+}
+
+double SlicedWasserstein::distance(const Matrix3& m) {
+  transform_base(m);
+  const std::size_t n = base_.size();
+  double total = 0.0;
+  for (std::size_t p = 0; p < axes_.size(); ++p) {
+    sort_projections(p);
+    const double* targets = sorted_targets_.data() + p * n;
+    for (std::size_t i = 0; i < n; ++i) total += std::abs(projections_[i] - targets[i]);
+  }
+  return total / static_cast<double>(n * axes_.size());
+}
+
+double SlicedWasserstein::gradient(const Matrix3& m, Matrix3& gradient) {
+  transform_base(m);
+  const std::size_t n = base_.size();
+  gradient.setZero();
+  double total = 0.0;
+  for (std::size_t p = 0; p < axes_.size(); ++p) {
+    const Vector3& axis = axes_[p];
+    sort_projections(p);
+    const std::size_t* ranked = order(p);
+    const double* targets = sorted_targets_.data() + p * n;
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::size_t k = ranked[i];
+      const double difference = projections_[i] - targets[i];
+      total += std::abs(difference);
+      if (difference == 0.0) continue;
+      const Vector3& w = transformed_[k];
+      // d(axis . normalize(M s)) / dM = ((axis - w (w . axis)) / |M s|) s^T
+      const Vector3 direction = (axis - w * w.dot(axis)) * (std::copysign(1.0, difference) / lengths_[k]);
+      gradient += direction * base_[k].transpose();
+    }
+  }
+  const double scale = 1.0 / static_cast<double>(n * axes_.size());
+  gradient *= scale;
+  return total * scale;
+}
+
+}  // namespace pbrfit::ltc
