@@ -1,0 +1,65 @@
+#include "pbrfit/gp/batch_interpreter.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "block_kernels.hpp"
+#include "block_schedule.hpp"
+#include "error_sums.hpp"
+
+namespace pbrfit::gp {
+
+template <class T>
+BatchInterpreter<T>::BatchInterpreter(const Dataset& dataset, const ErrorOptions& error_options)
+    : columns_(dataset.inputs.template cast<T>()),
+      target_(dataset.target),
+      error_options_(error_options),
+      slots_(max_program_length * block_rows),
+      constant_blocks_(max_program_length * max_operands * block_rows) {
+  validate(dataset);
+  const Eigen::Index n = dataset.inputs.rows();
+  weights_ = dataset.weights.size() == 0 ? Eigen::ArrayXd::Ones(n) : dataset.weights;
+  weight_sum_ = weights_.sum();
+  error_scale_ = Eigen::ArrayXd::Ones(n);
+  if (error_options.measure == ErrorMeasure::relative) {
+    error_scale_ = 1.0 / target_.abs().max(error_options.relative_floor);
+  }
+}
+
+template <class T>
+template <class Sink>
+void BatchInterpreter<T>::run(const Program& program, Sink& sink) {
+  const auto schedule = detail::schedule_blocks<T>(program, columns_, slots_, constant_blocks_, block_rows);
+  const std::size_t total = rows();
+  for (std::size_t first = 0; first < total; first += block_rows) {
+    const std::size_t n = std::min(block_rows, total - first);
+    for (std::size_t s = 0; s < schedule.step_count; ++s) {
+      const auto& step = schedule.steps[s];
+      detail::run_block<T>(step.op, step.operands[0].at(first), step.operands[1].at(first), step.operands[2].at(first),
+                           step.out, n);
+    }
+    sink(first, n, schedule.output.at(first));
+  }
+}
+
+template <class T>
+void BatchInterpreter<T>::evaluate(const Program& program, std::span<T> out) {
+  if (out.size() != rows()) throw std::invalid_argument("evaluate: the output span must have one value per row");
+  auto copy = [&](std::size_t first, std::size_t n, const T* values) { std::copy_n(values, n, out.data() + first); };
+  run(program, copy);
+}
+
+template <class T>
+double BatchInterpreter<T>::error(const Program& program) {
+  detail::ErrorSums sums;
+  auto accumulate = [&](std::size_t first, std::size_t n, const T* values) {
+    sums.add_block(values, target_.data() + first, weights_.data() + first, error_scale_.data() + first, n);
+  };
+  run(program, accumulate);
+  return sums.error(error_options_.measure, weight_sum_);
+}
+
+template class BatchInterpreter<float>;
+template class BatchInterpreter<double>;
+
+}  // namespace pbrfit::gp

@@ -1,0 +1,188 @@
+#include <catch2/catch_test_macros.hpp>
+#include <cmath>
+#include <cstddef>
+#include <cstring>
+#include <limits>
+#include <vector>
+
+#include "gp_test_support.hpp"
+#include "pbrfit/gp/batch_interpreter.hpp"
+#include "pbrfit/gp/cost_model.hpp"
+#include "pbrfit/gp/fitness_evaluator.hpp"
+#include "pbrfit/gp/live_code.hpp"
+#include "pbrfit/gp/program_builder.hpp"
+#include "pbrfit/gp/tree_walker.hpp"
+
+using namespace pbrfit::gp;
+
+namespace {
+
+// 300 rows: two full blocks and a partial one.
+const Dataset& mixed_inputs() {
+  static const Dataset dataset = gp_test::sampled_dataset(300, 3, -2.0, 2.0, [](auto) { return 0.0; });
+  return dataset;
+}
+
+template <class T>
+bool close(T batch, T walker, double tolerance) {
+  if (std::isnan(batch) || std::isnan(walker)) return std::isnan(batch) && std::isnan(walker);
+  if (std::isinf(batch) || std::isinf(walker))
+    return batch == walker || std::abs(double(batch) - double(walker)) > 1e30;
+  return std::abs(double(batch) - double(walker)) <= tolerance * (1.0 + std::abs(double(walker)));
+}
+
+// Counts rows where the batch interpreter and the tree walker disagree: bitwise for arithmetic-only
+// programs, within `tolerance` otherwise.
+template <class T>
+std::size_t disagreements(const Program& program, double tolerance) {
+  const Dataset& dataset = mixed_inputs();
+  BatchInterpreter<T> interpreter(dataset);
+  std::vector<T> batch(dataset.rows());
+  std::vector<T> walked(dataset.rows());
+  interpreter.evaluate(program, batch);
+  walk_tree<T>(program, dataset, walked);
+  bool exact_ops = true;
+  for (const Instruction& instruction : program.instructions()) {
+    const Opcode op = instruction.op;
+    exact_ops = exact_ops && (op <= Opcode::neg || op == Opcode::saturate);
+  }
+  std::size_t count = 0;
+  for (std::size_t r = 0; r < batch.size(); ++r) {
+    const bool same = exact_ops ? std::memcmp(&batch[r], &walked[r], sizeof(T)) == 0 ||
+                                      (batch[r] != batch[r] && walked[r] != walked[r])
+                                : close(batch[r], walked[r], tolerance);
+    count += !same;
+  }
+  return count;
+}
+
+}  // namespace
+
+TEST_CASE("The batch interpreter agrees with the tree walker on random programs", "[gp]") {
+  ProgramShape shape = gp_test::wide_shape(3);
+  ProgramShape arithmetic = shape;
+  arithmetic.operators = {Opcode::add, Opcode::sub, Opcode::mul, Opcode::div, Opcode::fma,
+                          Opcode::min, Opcode::max, Opcode::abs, Opcode::neg, Opcode::saturate};
+  std::size_t float_rows_off = 0;
+  std::size_t double_rows_off = 0;
+  for (std::uint64_t seed = 0; seed < 200; ++seed) {
+    const Program exact = gp_test::random_program(arithmetic, seed, 1);
+    CAPTURE(seed);
+    CHECK(disagreements<float>(exact, 0.0) == 0);
+    CHECK(disagreements<double>(exact, 0.0) == 0);
+    const Program any = gp_test::random_program(shape, seed, 2);
+    float_rows_off += disagreements<float>(any, 1e-3);
+    double_rows_off += disagreements<double>(any, 1e-9);
+  }
+  // Vectorized transcendentals differ from the C library's by ulps, which deep compositions may amplify.
+  CHECK(float_rows_off <= 200 * 300 / 1000);
+  CHECK(double_rows_off <= 200 * 300 / 1000);
+}
+
+TEST_CASE("Every operator matches its scalar semantics over one block", "[gp]") {
+  for (std::size_t k = 0; k < opcode_count; ++k) {
+    const auto op = static_cast<Opcode>(k);
+    ProgramBuilder builder;
+    const Argument a = input_argument(0);
+    const Argument b = input_argument(1);
+    const Argument c = input_argument(2);
+    const Argument all[3] = {a, b, c};
+    const Program program = builder.finish(builder.append(op, all, static_cast<std::size_t>(arity(op))));
+    CAPTURE(name(op));
+    CHECK(disagreements<float>(program, 1e-6) == 0);
+    CHECK(disagreements<double>(program, 1e-14) == 0);
+  }
+}
+
+TEST_CASE("Introns are skipped and pruning keeps the function bitwise", "[gp]") {
+  ProgramBuilder builder;
+  const Argument x = input_argument(0);
+  builder.append(Opcode::exp, {x});                                                    // 0: intron
+  const Argument square = builder.append(Opcode::mul, {x, x});                         // 1
+  builder.append(Opcode::log, {square});                                               // 2: intron reading a live one
+  const Argument sum = builder.append(Opcode::add, {square, constant_argument(1.5)});  // 3
+  const Program program = builder.finish(sum);
+  CHECK(live_length(program) == 2);
+  CHECK(live_instructions(program).to_ulong() == 0b1010);
+  const Program pruned = without_introns(program);
+  REQUIRE(is_valid(pruned, 1));
+  CHECK(pruned.length == 2);
+  CHECK(program_cost(program, gcn_cost_table()) == 2.0);  // introns cost nothing
+  for (std::uint64_t seed = 0; seed < 100; ++seed) {
+    const Program random = gp_test::random_program(gp_test::wide_shape(3), seed, 3);
+    const Program compact = without_introns(random);
+    REQUIRE(is_valid(compact, 3));
+    CHECK(compact.length == live_length(random));
+    BatchInterpreter<float> interpreter(mixed_inputs());
+    std::vector<float> full(300);
+    std::vector<float> short_form(300);
+    interpreter.evaluate(random, full);
+    interpreter.evaluate(compact, short_form);
+    CHECK(std::memcmp(full.data(), short_form.data(), full.size() * sizeof(float)) == 0);
+  }
+}
+
+TEST_CASE("Poles, overflow and NaN give the worst error, never NaN or a crash", "[gp]") {
+  const Dataset dataset = gp_test::sampled_dataset(200, 1, -1.0, 1.0, [](auto x) { return x[0]; });
+  Dataset with_zero = dataset;
+  with_zero.inputs(17, 0) = 0.0;
+  const Argument x = input_argument(0);
+  const auto single = [&](Opcode op, std::initializer_list<Argument> arguments) {
+    ProgramBuilder builder;
+    return builder.finish(builder.append(op, arguments));
+  };
+  ProgramBuilder overflow;
+  const Argument big = overflow.append(Opcode::exp, {constant_argument(400.0)});
+  const Program huge = overflow.finish(overflow.append(Opcode::mul, {big, big}));
+  ProgramBuilder nan_builder;
+  const Argument pole = nan_builder.append(Opcode::div, {x, x});  // 0/0 at row 17
+  const Program hidden_nan = nan_builder.finish(nan_builder.append(Opcode::min, {pole, constant_argument(2.0)}));
+  const std::vector<Program> poisoned{single(Opcode::div, {constant_argument(1.0), x}),
+                                      single(Opcode::log, {x}),
+                                      single(Opcode::rsqrt, {x}),
+                                      huge,
+                                      hidden_nan,
+                                      single(Opcode::pow, {x, constant_argument(-1.0)})};
+  for (Precision precision : {Precision::float32, Precision::float64}) {
+    FitnessOptions options;
+    options.precision = precision;
+    FitnessEvaluator evaluator(with_zero, options);
+    for (const Program& program : poisoned) {
+      const Fitness fitness = evaluator(program);
+      CHECK(fitness.evaluated);
+      CHECK(fitness.error == worst_error);
+    }
+    CHECK(evaluator(single(Opcode::sqrt, {x})).error < 2.0);  // protected: sqrt(|x|)
+    CHECK(evaluator.evaluations() == poisoned.size() + 1);
+  }
+}
+
+TEST_CASE("Error measures: RMSE, max abs and relative, weighted", "[gp]") {
+  Dataset dataset;
+  dataset.inputs = Eigen::ArrayXXd(4, 1);
+  dataset.inputs << 1.0, 2.0, 3.0, 4.0;
+  dataset.target = Eigen::ArrayXd(4);
+  dataset.target << 1.0, 2.0, 2.0, 8.0;  // residuals of y = x: 0, 0, 1, -4
+  ProgramBuilder builder;
+  const Program identity = builder.finish(input_argument(0));
+  CHECK(BatchInterpreter<double>(dataset).error(identity) == std::sqrt(17.0 / 4.0));
+  CHECK(BatchInterpreter<float>(dataset, {ErrorMeasure::max_abs}).error(identity) == 4.0);
+  CHECK(BatchInterpreter<double>(dataset, {ErrorMeasure::relative}).error(identity) == std::sqrt((0.25 + 0.25) / 4.0));
+  dataset.weights = Eigen::ArrayXd(4);
+  dataset.weights << 1.0, 1.0, 2.0, 0.0;
+  CHECK(BatchInterpreter<double>(dataset).error(identity) == std::sqrt(2.0 / 4.0));
+}
+
+TEST_CASE("The cost counts live operators from the table and the piecewise ones", "[gp]") {
+  ProgramBuilder builder;
+  const Argument x = input_argument(0);
+  const Argument q = builder.append(Opcode::div, {x, constant_argument(3.0)});    // 5
+  const Argument e = builder.append(Opcode::exp2, {q});                           // 4
+  const Argument m = builder.append(Opcode::max, {e, x});                         // 1, piecewise
+  const Program program = builder.finish(builder.append(Opcode::saturate, {m}));  // 1, piecewise
+  CostTable table = gcn_cost_table();
+  CHECK(program_cost(program, table) == 11.0);
+  CHECK(piecewise_count(program) == 2);
+  table.piecewise_penalty = 10.0;
+  CHECK(program_cost(program, table) == 31.0);
+}
