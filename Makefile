@@ -5,7 +5,7 @@ MPIRUN ?= mpirun
 # memory only (no probing for network transports) saves about 0.2 s of start-up on one machine.
 MPIRUN_FLAGS ?= $(if $(filter 0,$(shell id -u)),--allow-run-as-root,) --oversubscribe --mca pml ob1 --mca btl self,vader
 
-.PHONY: demo test build deps bench clean
+.PHONY: demo test build deps bench soak clean
 
 demo: build
 	$(MPIRUN) $(MPIRUN_FLAGS) -np 2 $(BUILD)/pbrfit run jobs/quickstart.yaml
@@ -25,6 +25,10 @@ bench: build
 	tests/benchmarks/dfg_threads.sh $(BUILD)/pbrfit
 	tests/benchmarks/runtime_state.sh $(BUILD)/tests/pbrfit_runtime_probe
 	$(BUILD)/tests/bench_optimizers
+
+# Fault injection, 20 rounds of each fault (about 15 minutes; not part of test). Figures: docs/RELIABILITY.md.
+soak: build
+	PBRFIT=$(abspath $(BUILD))/pbrfit PBRFIT_SOURCE_DIR=$(CURDIR) tests/soak/fault_soak.sh 20
 
 build: deps
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release

@@ -52,11 +52,21 @@ std::string state_of(const store::ResultSummary& s, const std::string& path) {
                    : "interrupted (the job stopped without saying so and left no checkpoint)";
 }
 
+// A result that cannot be read but has a checkpoint beside it is not lost: say how to get it back.
+store::ResultSummary read_summary_or_explain(const std::string& path) {
+  try {
+    return read_summary_retrying(path);
+  } catch (const InputError& error) {
+    if (access(store::checkpoint_path_for(path).c_str(), R_OK) != 0) throw;
+    throw InputError(error.where(), error.message() + "; its checkpoint is intact: `pbrfit run JOB --resume` rebuilds it");
+  }
+}
+
 }  // namespace
 
 int status_command(const std::string& result_file) {
   return exit_on_error([&] {
-    const auto s = read_summary_retrying(result_file);
+    const auto s = read_summary_or_explain(result_file);
     const double percent = s.items_total ? 100.0 * double(s.items_done) / double(s.items_total) : 0.0;
     std::printf("result:    %s\n", result_file.c_str());
     std::printf("job:       %s (%s), %lld rank%s, seed %llu\n", s.job_name.c_str(), s.job_kind.c_str(),

@@ -1,5 +1,8 @@
 #include "hdf5_handle.hpp"
 
+#include <cerrno>
+#include <cstring>
+
 #include "pbrfit/core/error.hpp"
 
 namespace pbrfit::store::h5 {
@@ -19,23 +22,46 @@ void Handle::reset() {
   id_ = H5I_INVALID_HID;
 }
 
+namespace {
+
+// HDF5 does not report the OS's reason; errno still holds it after a failed write or open. Only reasons
+// that can come from the storage itself are named, so a stale errno is never blamed.
+std::string storage_reason() {
+  switch (errno) {
+    case ENOSPC: case EDQUOT: case EIO: case EROFS: case EFBIG: case EACCES: return std::string(": ") + std::strerror(errno);
+    default: return "";
+  }
+}
+
+}  // namespace
+
 hid_t check(hid_t id, const std::string& what) {
-  if (id < 0) throw RunError("HDF5: cannot " + what);
+  if (id < 0) throw RunError("HDF5: cannot " + what + storage_reason());
   return id;
 }
 
 void check(herr_t status, const std::string& what) {
-  if (status < 0) throw RunError("HDF5: cannot " + what);
+  if (status < 0) throw RunError("HDF5: cannot " + what + storage_reason());
+}
+
+namespace {
+
+// HDF5 closes what is still open when the process exits, and crashes doing so for a file whose close
+// already failed (a full disk). Every file is closed explicitly here, so the library is told not to
+// clean up at exit; this runs before main, hence before any other HDF5 call, as H5dont_atexit needs.
+const bool no_cleanup_at_exit = (H5dont_atexit(), true);
+
+}  // namespace
+
+herr_t close_file_id(hid_t id) {
+  (void)no_cleanup_at_exit;
+  // A failed close leaves a half-closed file in HDF5's table that crashes the library when touched
+  // again (by H5Idec_ref or at exit), so it is never touched again.
+  return H5Fclose(id);
 }
 
 void close_file(Handle& file) {
-  const hid_t id = file.get();
-  file.release();
-  if (H5Fclose(id) >= 0) return;
-  // A failed close leaves the file in HDF5's table; evict it so the library never retries at exit.
-  while (H5Iis_valid(id) > 0 && H5Idec_ref(id) > 0) {
-  }
-  throw RunError("HDF5: cannot close (flush) the file");
+  if (close_file_id(file.release()) < 0) throw RunError("HDF5: cannot close (flush) the file");
 }
 
 void silence_error_stack() { H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); }
@@ -51,7 +77,7 @@ Handle open_file(const std::string& path, bool writable) {
   Handle fapl = file_access();
   hid_t id = H5Fopen(path.c_str(), writable ? H5F_ACC_RDWR : H5F_ACC_RDONLY, fapl);
   check(id, "open " + path);
-  return Handle(id, H5Fclose);
+  return Handle(id, close_file_id);
 }
 
 namespace {

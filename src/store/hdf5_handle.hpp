@@ -52,9 +52,10 @@ std::string read_string_attribute(hid_t object, const std::string& name);
 std::int64_t read_i64_attribute(hid_t object, const std::string& name);
 double read_f64_attribute(hid_t object, const std::string& name);
 
-// Closes a file, reporting failure (a close flushes; on a full disk it fails). HDF5 keeps no trace of
-// the file afterwards either way, so nothing is left for the library to flush at process exit.
+// Closes a file, reporting failure (a close flushes; on a full disk it fails).
 void close_file(Handle& file);
+// The closer of every file handle; a file whose close failed is left alone, not retried at exit.
+herr_t close_file_id(hid_t id);
 
 // Silences HDF5's own error stack printing for this process (errors are reported as exceptions).
 void silence_error_stack();

@@ -67,7 +67,7 @@ ResultFile::ResultFile(std::string path, ResultLayout layout, const RunInfo& inf
   Handle fapl = h5::file_access();
   check(H5Pset_libver_bounds(fapl, H5F_LIBVER_V110, H5F_LIBVER_LATEST), "set file format");
   PosixFile::create(working_).close();  // reports a missing or read-only directory with the OS's reason
-  Handle file(check(H5Fcreate(working_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl), "create " + working_), H5Fclose);
+  Handle file(check(H5Fcreate(working_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl), "create " + working_), h5::close_file_id);
   write_run_info(file, info);
   write_progress(file, Progress{});
   for (const auto& group : layout_.groups) create_group(file, group);
