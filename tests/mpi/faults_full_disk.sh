@@ -28,6 +28,14 @@ for ranks in 1 2; do
     { cat status.txt; fail "status does not say how to get the result back"; }
 done
 
+note "a read-only output directory: exit 3 with the OS's reason"
+mkdir readonly
+mount -t tmpfs -o ro,size=100k tmpfs readonly
+run_ranks 1 run job.yaml --output readonly/result.h5 -q 2>err.txt
+umount readonly
+expect_status 3 "a read-only directory"
+grep -q "Read-only file system" err.txt || { cat err.txt; fail "the reason is not named"; }
+
 note "room again: --resume completes to the same numbers"
 mount -o remount,size=20m small
 run_ranks 2 run job.yaml --output small/result.h5 --resume -q

@@ -480,6 +480,33 @@ TEST_CASE("messages stay on one line whatever the user wrote") {
   }
 }
 
+TEST_CASE("an unclosed quote is reported where it opens, not as missing keys") {
+  for (const std::string value : {"\"results/x.h5", "'results/x.h5", "\"a\\\"", "'it''s"}) {
+    INFO(value);
+    try {
+      (void)parse_job_text("name: dfg\noutput: " + value + "\nkind: lut\nlut: {function: dfg}\n", "t.yaml",
+                           test_kinds());
+      FAIL("accepted");
+    } catch (const InputError& error) {
+      CHECK(std::string(error.what()) == std::string("t.yaml:2:9: error: unclosed quote: the value starting with ") +
+                                             value[0] + " must end with " + value[0] + " on the same line");
+    }
+  }
+}
+
+TEST_CASE("a 5000-digit number is shortened in its message") {
+  try {
+    (void)parse_job_text("name: dfg\nkind: lut\nseed: " + std::string(5000, '9') + "\nlut: {function: dfg}\n",
+                         "t.yaml", test_kinds());
+    FAIL("accepted");
+  } catch (const InputError& error) {
+    const std::string message = error.what();
+    CHECK(message.size() < 200);
+    CHECK(message.find('\n') == std::string::npos);
+    CHECK(message.rfind("t.yaml:3:7: error: 'seed' ", 0) == 0);
+  }
+}
+
 TEST_CASE("long values are shortened in messages") {
   const std::string word(70, 'w');
   try {

@@ -69,6 +69,20 @@ TEST_CASE("values that could escape a #SBATCH line are refused") {
   REQUIRE_THROWS_AS(submit::batch_job_for(job(), {0, 0, "soon", "", ""}, "/p", "/w"), InputError);
 }
 
+TEST_CASE("refusals quote what they refuse on one line") {
+  REQUIRE_THROWS_WITH(submit::batch_job_for(job(), {0, 0, "", "", "a\nb"}, "/p", "/w"),
+                      "jobs/a.yaml: error: the account 'a\\nb' may contain only letters, digits and ._- to go "
+                      "into a Slurm batch script");
+}
+
+TEST_CASE("a zero time limit, which Slurm reads as none, is refused") {
+  for (const std::string zero : {"0", "00:00", "0-0", "0:00:00"}) {
+    INFO(zero);
+    REQUIRE_THROWS_WITH(submit::batch_job_for(job(), {0, 0, zero, "", ""}, "/p", "/w"),
+                        "--time: error: '" + zero + "' is zero, which Slurm reads as no limit at all");
+  }
+}
+
 TEST_CASE("the shipped template renders a requeueable, signalled, resuming script") {
   const auto b = submit::batch_job_for(job(", partition: short, threads: 6"), {}, "/opt/pbrfit", "/w");
   const auto script = submit::render_batch_script(b, shipped_template(), "sbatch.template");
