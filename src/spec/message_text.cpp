@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <limits>
 
 namespace pbrfit::spec {
 
@@ -24,6 +25,23 @@ std::string join(const std::vector<std::string>& items, std::string_view separat
   return out;
 }
 
+namespace {
+
+// "a list of 2 integers", "a list of 1 to 3 numbers", "a list of at least 1 mapping".
+std::string list_requirement(const Field& field, const char* one, const char* many) {
+  const bool unbounded = field.list_max == std::numeric_limits<std::size_t>::max();
+  std::string counts = std::to_string(field.list_min);
+  if (unbounded) {
+    counts = "at least " + counts;
+  } else if (field.list_max != field.list_min) {
+    counts += " to " + std::to_string(field.list_max);
+  }
+  const bool singular = unbounded ? field.list_min == 1 : field.list_max == 1;
+  return "a list of " + counts + " " + (singular ? one : many);
+}
+
+}  // namespace
+
 std::string type_requirement(const Field& field) {
   switch (field.type) {
     case FieldType::boolean: return "true or false";
@@ -31,12 +49,13 @@ std::string type_requirement(const Field& field) {
     case FieldType::number: return "a number";
     case FieldType::string: return "a string";
     case FieldType::choice: return "one of " + join(field.choices);
-    case FieldType::integer_list: {
-      std::string counts = std::to_string(field.list_min);
-      if (field.list_max != field.list_min) counts += " to " + std::to_string(field.list_max);
-      return "a list of " + counts + (field.list_max == 1 ? " integer" : " integers");
-    }
+    case FieldType::integer_list: return list_requirement(field, "integer", "integers");
+    case FieldType::number_list: return list_requirement(field, "number", "numbers");
+    case FieldType::string_list:
+      return field.choices.empty() ? list_requirement(field, "string", "strings")
+                                   : list_requirement(field, "name", "names") + " from " + join(field.choices);
     case FieldType::section: return "a mapping";
+    case FieldType::section_list: return list_requirement(field, "mapping", "mappings");
   }
   return "valid";
 }

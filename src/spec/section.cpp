@@ -24,7 +24,7 @@ void Section::require_declared(const std::string& key) const {
 
 bool Section::has(const std::string& key) const {
   require_declared(key);
-  return entries_.contains(key) || sections_.contains(key);
+  return entries_.contains(key) || sections_.contains(key) || section_lists_.contains(key);
 }
 
 bool Section::given(const std::string& key) const {
@@ -62,6 +62,21 @@ const std::vector<std::int64_t>& Section::get_int_list(const std::string& key) c
   return value_as<std::vector<std::int64_t>>(entry(key), key, "a list of integers");
 }
 
+const std::vector<double>& Section::get_number_list(const std::string& key) const {
+  return value_as<std::vector<double>>(entry(key), key, "a list of numbers");
+}
+
+const std::vector<std::string>& Section::get_string_list(const std::string& key) const {
+  return value_as<std::vector<std::string>>(entry(key), key, "a list of strings");
+}
+
+const std::vector<Section>& Section::get_section_list(const std::string& key) const {
+  require_declared(key);
+  auto found = section_lists_.find(key);
+  if (found == section_lists_.end()) misuse(key, "is not a list of mappings");
+  return found->second.sections;
+}
+
 const Section& Section::get_section(const std::string& key) const {
   require_declared(key);
   auto found = sections_.find(key);
@@ -75,6 +90,7 @@ SourcePosition Section::position(const std::string& key) const {
   require_declared(key);
   if (auto found = entries_.find(key); found != entries_.end()) return found->second.where;
   if (auto found = sections_.find(key); found != sections_.end()) return found->second.position();
+  if (auto found = section_lists_.find(key); found != section_lists_.end()) return found->second.where;
   return position_;
 }
 
@@ -87,6 +103,7 @@ void Section::declare(const std::string& key) { declared_.insert(key); }
 void Section::set(const std::string& key, Entry entry) {
   declare(key);
   sections_.erase(key);
+  section_lists_.erase(key);
   given_sections_.erase(key);
   entries_.insert_or_assign(key, std::move(entry));
 }
@@ -94,7 +111,21 @@ void Section::set(const std::string& key, Entry entry) {
 void Section::set_section(const std::string& key, Section section, bool given) {
   declare(key);
   entries_.erase(key);
+  section_lists_.erase(key);
   sections_.insert_or_assign(key, std::move(section));
+  mark_given(key, given);
+}
+
+void Section::set_section_list(const std::string& key, std::vector<Section> sections, SourcePosition where,
+                               bool given) {
+  declare(key);
+  entries_.erase(key);
+  sections_.erase(key);
+  section_lists_.insert_or_assign(key, SectionList{std::move(sections), std::move(where)});
+  mark_given(key, given);
+}
+
+void Section::mark_given(const std::string& key, bool given) {
   if (given) {
     given_sections_.insert(key);
   } else {

@@ -1,5 +1,6 @@
 #include "yaml_validation.hpp"
 
+#include <algorithm>
 #include <optional>
 #include <set>
 #include <vector>
@@ -86,20 +87,61 @@ std::string count_of_items(std::size_t count) {
   return "a list of " + std::to_string(count) + (count == 1 ? " item" : " items");
 }
 
-std::vector<std::int64_t> checked_integer_list(const Field& field, const YAML::Node& key,
-                                               const YAML::Node& value, const YamlSource& source) {
+void check_list_size(const Field& field, const YAML::Node& key, const YAML::Node& value, const YamlSource& source) {
   if (!value.IsSequence()) reject_wrong_type(field, key, value, source);
   if (value.size() < field.list_min || value.size() > field.list_max) {
     reject_value(source.position(value.Mark()), quote(field.name), type_requirement(field),
                  count_of_items(value.size()));
   }
+}
+
+std::string item_subject(const Field& field, std::size_t index) {
+  return quote(field.name) + " item " + std::to_string(index + 1);
+}
+
+std::vector<std::int64_t> checked_integer_list(const Field& field, const YAML::Node& key,
+                                               const YAML::Node& value, const YamlSource& source) {
+  check_list_size(field, key, value, source);
   std::vector<std::int64_t> integers;
   for (std::size_t i = 0; i < value.size(); ++i) {
     const YAML::Node item = value[i];
-    const std::string subject = quote(field.name) + " item " + std::to_string(i + 1);
-    integers.push_back(checked_integer(field, subject, item, source.position(item.Mark()), source));
+    integers.push_back(checked_integer(field, item_subject(field, i), item, source.position(item.Mark()), source));
   }
   return integers;
+}
+
+std::vector<double> checked_number_list(const Field& field, const YAML::Node& key, const YAML::Node& value,
+                                        const YamlSource& source) {
+  check_list_size(field, key, value, source);
+  std::vector<double> numbers;
+  for (std::size_t i = 0; i < value.size(); ++i) {
+    const YAML::Node item = value[i];
+    const SourcePosition where = source.position(item.Mark());
+    const std::optional<double> number = item.IsScalar() ? parse_number(item.Scalar()) : std::nullopt;
+    if (!number) reject_value(where, item_subject(field, i), "a number", source.describe(item));
+    check_range(field, item_subject(field, i), *number, item.Scalar(), where);
+    numbers.push_back(*number);
+  }
+  return numbers;
+}
+
+std::vector<std::string> checked_string_list(const Field& field, const YAML::Node& key, const YAML::Node& value,
+                                             const YamlSource& source) {
+  check_list_size(field, key, value, source);
+  std::vector<std::string> texts;
+  for (std::size_t i = 0; i < value.size(); ++i) {
+    const YAML::Node item = value[i];
+    const SourcePosition where = source.position(item.Mark());
+    if (!item.IsScalar() || item.Scalar().empty()) {
+      reject_value(where, item_subject(field, i), "a non-empty string", source.describe(item));
+    }
+    if (!field.choices.empty() && std::ranges::find(field.choices, item.Scalar()) == field.choices.end()) {
+      throw InputError(where, item_subject(field, i) + " must be one of " + join(field.choices) + "; got " +
+                                  source.describe(item) + suggestion(item.Scalar(), field.choices));
+    }
+    texts.push_back(item.Scalar());
+  }
+  return texts;
 }
 
 Scalar checked_scalar(const Field& field, const YAML::Node& key, const YAML::Node& value,
@@ -112,7 +154,10 @@ Scalar checked_scalar(const Field& field, const YAML::Node& key, const YAML::Nod
     case FieldType::string: return checked_string(field, key, value, source);
     case FieldType::choice: return checked_choice(field, key, value, source);
     case FieldType::integer_list: return checked_integer_list(field, key, value, source);
-    case FieldType::section: break;
+    case FieldType::number_list: return checked_number_list(field, key, value, source);
+    case FieldType::string_list: return checked_string_list(field, key, value, source);
+    case FieldType::section:
+    case FieldType::section_list: break;
   }
   throw std::logic_error("pbrfit::spec: section field '" + field.name + "' validated as a value");
 }
@@ -132,8 +177,10 @@ std::optional<Section> defaulted_section(const Schema& schema, const SourcePosit
   Section section(where);
   for (const Field& field : schema.fields()) {
     section.declare(field.name);
-    if (field.required) return std::nullopt;
-    if (field.type == FieldType::section) {
+    if (field.required || (field.type == FieldType::section_list && field.list_min > 0)) return std::nullopt;
+    if (field.type == FieldType::section_list) {
+      section.set_section_list(field.name, {}, where, false);
+    } else if (field.type == FieldType::section) {
       if (auto nested = defaulted_section(*field.nested, where)) {
         section.set_section(field.name, std::move(*nested), false);
       }
@@ -145,11 +192,13 @@ std::optional<Section> defaulted_section(const Schema& schema, const SourcePosit
 }
 
 void fill_absent_field(Section& section, const Field& field, const std::string& path) {
-  if (field.required) {
+  if (field.required || (field.type == FieldType::section_list && field.list_min > 0)) {
     throw InputError(section.position(), "missing required key " + quote(field.name) + " in " +
                                              quote(display_path(path)));
   }
-  if (field.type == FieldType::section) {
+  if (field.type == FieldType::section_list) {
+    section.set_section_list(field.name, {}, section.position(), false);
+  } else if (field.type == FieldType::section) {
     if (auto nested = defaulted_section(*field.nested, section.position())) {
       section.set_section(field.name, std::move(*nested), false);
     }
@@ -162,6 +211,22 @@ Section validated_section(const Field& field, const YAML::Node& key, const YAML:
                           const std::string& path, const YamlSource& source) {
   if (!value.IsMap()) reject_wrong_type(field, key, value, source);
   return validate_mapping(value, *field.nested, child_path(path, field.name), source);
+}
+
+// Each item a mapping of the nested schema, named "PATH.KEY[N]" (1-based) in messages.
+std::vector<Section> validated_section_list(const Field& field, const YAML::Node& key, const YAML::Node& value,
+                                            const std::string& path, const YamlSource& source) {
+  check_list_size(field, key, value, source);
+  std::vector<Section> sections;
+  for (std::size_t i = 0; i < value.size(); ++i) {
+    const YAML::Node item = value[i];
+    const std::string item_path = child_path(path, field.name) + "[" + std::to_string(i + 1) + "]";
+    if (!item.IsMap()) {
+      reject_value(source.position(item.Mark()), quote(item_path), "a mapping", source.describe(item));
+    }
+    sections.push_back(validate_mapping(item, *field.nested, item_path, source));
+  }
+  return sections;
 }
 
 // Aliases can make a document a graph. The walk rejects an alias of a mapping or list that encloses
@@ -251,6 +316,9 @@ Section validate_mapping(const YAML::Node& mapping, const Schema& schema, const 
     if (!field) reject_unknown_key(key, pair.first, schema, path, source);
     if (field->type == FieldType::section) {
       section.set_section(key, validated_section(*field, pair.first, pair.second, path, source));
+    } else if (field->type == FieldType::section_list) {
+      section.set_section_list(key, validated_section_list(*field, pair.first, pair.second, path, source),
+                               source.position(pair.second.Mark()), true);
     } else {
       section.set(key, validate_value(*field, pair.first, pair.second, source));
     }

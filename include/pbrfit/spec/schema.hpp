@@ -5,6 +5,7 @@
 // A key written with an empty or null value (`key:`, `key: ~`, `key: null`) is a wrong-type error,
 // never "absent": only leaving the key out selects its default.
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <memory>
 #include <optional>
@@ -21,9 +22,14 @@ namespace pbrfit::spec {
 class Schema;
 class Section;
 
-enum class FieldType { boolean, integer, number, string, choice, integer_list, section };
+enum class FieldType { boolean, integer, number, string, choice, integer_list, number_list, string_list, section,
+                       section_list };
 
-using Scalar = std::variant<bool, std::int64_t, double, std::string, std::vector<std::int64_t>>;
+// No upper limit on a list's length (beyond the job file's size).
+inline constexpr std::size_t unbounded = std::numeric_limits<std::size_t>::max();
+
+using Scalar = std::variant<bool, std::int64_t, double, std::string, std::vector<std::int64_t>, std::vector<double>,
+                            std::vector<std::string>>;
 
 struct Field {
   std::string name;
@@ -33,9 +39,9 @@ struct Field {
   std::optional<Scalar> default_value;
   std::optional<double> min, max;            // inclusive bounds for integer, number and list elements
   bool min_exclusive = false;
-  std::vector<std::string> choices;          // for FieldType::choice
-  std::size_t list_min = 0, list_max = 0;    // element counts for integer_list
-  std::shared_ptr<const Schema> nested;      // for FieldType::section
+  std::vector<std::string> choices;          // choice; string_list: allowed elements (empty: any string)
+  std::size_t list_min = 0, list_max = 0;    // element counts of every list type
+  std::shared_ptr<const Schema> nested;      // section and section_list: the schema of each mapping
 
   // Fluent setters; each returns *this.
   Field& require();
@@ -60,9 +66,17 @@ class Schema {
   Field& choice(const std::string& name, std::vector<std::string> choices, const std::string& doc);
   Field& integer_list(const std::string& name, std::size_t min_count, std::size_t max_count,
                       const std::string& doc);
+  Field& number_list(const std::string& name, std::size_t min_count, std::size_t max_count, const std::string& doc);
+  // choices empty: any non-empty string; else each element must be one of them.
+  Field& string_list(const std::string& name, std::size_t min_count, std::size_t max_count, const std::string& doc,
+                     std::vector<std::string> choices = {});
   // A nested mapping; its defaults apply when the key is absent (unless the field is required).
   // An absent optional section whose schema has required keys cannot be defaulted: has() is false.
   Field& section(const std::string& name, Schema nested, const std::string& doc);
+  // A list of mappings, each validated by `nested`; an absent key defaults to the empty list when
+  // min_count is 0 (otherwise it is missing, like a required key).
+  Field& section_list(const std::string& name, Schema nested, std::size_t min_count, std::size_t max_count,
+                      const std::string& doc);
 
   const std::string& name() const { return name_; }
   const std::vector<Field>& fields() const { return fields_; }
@@ -86,7 +100,10 @@ class Section {
   double get_number(const std::string& key) const;  // integers are accepted for numbers
   const std::string& get_string(const std::string& key) const;  // also for choices
   const std::vector<std::int64_t>& get_int_list(const std::string& key) const;
+  const std::vector<double>& get_number_list(const std::string& key) const;  // integers widened
+  const std::vector<std::string>& get_string_list(const std::string& key) const;
   const Section& get_section(const std::string& key) const;
+  const std::vector<Section>& get_section_list(const std::string& key) const;
 
   // Where the key's value is written; the section's own position when the key was defaulted.
   SourcePosition position(const std::string& key) const;
@@ -106,15 +123,22 @@ class Section {
   void declare(const std::string& key);
   void set(const std::string& key, Entry entry);
   void set_section(const std::string& key, Section section, bool given = true);
+  void set_section_list(const std::string& key, std::vector<Section> sections, SourcePosition where, bool given);
 
  private:
   const Entry& entry(const std::string& key) const;
+  void mark_given(const std::string& key, bool given);
   void require_declared(const std::string& key) const;
   SourcePosition position_;
   std::set<std::string> declared_;        // every schema key, with or without a value
   std::map<std::string, Entry> entries_;
   std::map<std::string, Section> sections_;
-  std::set<std::string> given_sections_;  // the keys of sections_ written in the file
+  std::set<std::string> given_sections_;  // the keys of sections_ and section_lists_ written in the file
+  struct SectionList {
+    std::vector<Section> sections;
+    SourcePosition where;
+  };
+  std::map<std::string, SectionList> section_lists_;
 };
 
 // The closest candidate by edit distance, or "" when none is plausibly meant: the Levenshtein distance

@@ -37,9 +37,19 @@ inline Schema test_lut_schema() {
   return lut;
 }
 
+// A sweep section with lists of every kind: axes (mappings), weights (numbers), operators (names).
 inline Schema test_sweep_schema() {
+  Schema axis("axis");
+  axis.string("name", "Axis name.").require();
+  axis.integer("count", "Samples.").defaults_to(8).range(1, 1024);
   Schema sweep("sweep");
   sweep.integer("steps", "Sweep steps.").defaults_to(10).at_least(1);
+  sweep.section_list("axes", axis, 0, 4, "Grid axes.");
+  sweep.section_list("levels", axis, 1, unbounded, "At least one level.");
+  sweep.number_list("weights", 1, 3, "Weights.").defaults_to(std::vector<double>{1.0}).range(0, 10);
+  sweep.string_list("operators", 1, unbounded, "Operators.", {"add", "mul", "sin"})
+      .defaults_to(std::vector<std::string>{"add"});
+  sweep.string_list("tags", 0, 2, "Free names.").defaults_to(std::vector<std::string>{});
   return sweep;
 }
 
