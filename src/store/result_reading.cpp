@@ -98,4 +98,11 @@ std::vector<std::string> read_text_table(const std::string& path, const std::str
   return out;
 }
 
+std::string read_text_attribute(const std::string& path, const std::string& object, const std::string& name) {
+  Handle file = h5::open_file(path, false);
+  const std::string where = object.empty() ? "/" : object;
+  Handle target(check(H5Oopen(file, where.c_str(), H5P_DEFAULT), "open " + where), H5Oclose);
+  return h5::read_string_attribute(target, name);
+}
+
 }  // namespace pbrfit::store

@@ -80,6 +80,7 @@ void create_table(hid_t group, const Group& layout, const Table& table) {
   h5::write_string_attribute(data, "axes", joined(table.axes));
   for (const auto& field : table.fields)
     h5::write_string_attribute(data, "field_" + field.name, field.description);
+  for (const auto& [key, value] : table.attributes) h5::write_string_attribute(data, key, value);
 }
 
 }  // namespace
@@ -92,7 +93,9 @@ std::vector<std::uint64_t> table_extent(const Group& group, const Table& table) 
 }
 
 void create_group(hid_t file, const Group& layout) {
-  Handle group(check(H5Gcreate2(file, layout.name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+  Handle links(check(H5Pcreate(H5P_LINK_CREATE), "create link properties"), H5Pclose);
+  check(H5Pset_create_intermediate_group(links, 1), "allow nested groups");
+  Handle group(check(H5Gcreate2(file, layout.name.c_str(), links, H5P_DEFAULT, H5P_DEFAULT),
                      "create group " + layout.name),
                H5Gclose);
   h5::write_string_attribute(group, "description", layout.description);

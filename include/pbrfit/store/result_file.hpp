@@ -76,6 +76,8 @@ std::vector<double> read_table(const std::string& path, const std::string& datas
                                std::vector<std::uint64_t>* dims = nullptr);
 // Reads one whole table of texts.
 std::vector<std::string> read_text_table(const std::string& path, const std::string& dataset);
+// A string attribute of a group or dataset ("" names the root); throws RunError when it is missing.
+std::string read_text_attribute(const std::string& path, const std::string& object, const std::string& name);
 
 std::string utc_now_iso8601();
 // This machine's name, as recorded in writer_host.

@@ -41,6 +41,8 @@ struct Table {
   std::vector<Field> fields = {};         // non-empty: every element is a record of these fields
   bool growing = false;                   // rows are appended along the first dimension
   std::vector<std::uint64_t> chunk = {};  // chunk shape per dimension; empty: chosen by the store
+  // Further string attributes of the dataset for readers (docs/report.md: `role`, `anchor`, ...).
+  std::map<std::string, std::string> attributes = {};
 
   bool is_record() const { return !fields.empty(); }
   // Numeric and text values per element: 1 and 0 for numbers, 0 and 1 for texts, the field counts for
@@ -50,7 +52,7 @@ struct Table {
 };
 
 struct Group {
-  std::string name;                                // e.g. "dfg"
+  std::string name;                                // e.g. "dfg"; "ltc/level2" nests (parents are created)
   std::string description;
   std::map<std::string, std::string> attributes;   // settings a reader needs (parametrization, ...)
   std::vector<Axis> axes;

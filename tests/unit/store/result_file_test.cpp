@@ -128,6 +128,26 @@ TEST_CASE("tables keep their declared types: float32, integers, texts, records a
   CHECK(dims == std::vector<std::uint64_t>{3, 3});
 }
 
+TEST_CASE("groups nest by their names and tables carry the attributes their kind declares") {
+  const auto path = temporary_path("nested.h5");
+  store::Group level;
+  level.name = "fit/level1";
+  level.axes = {{"x", {0, 1}, "x"}};
+  level.tables = {{"error", {"x"}, "fit error"}};
+  level.tables[0].attributes = {{"role", "error"}, {"anchor", "none"}};
+  store::Group sibling = level;
+  sibling.name = "fit/level2";
+  store::ResultFile file(path, {{level, sibling}}, info());
+  file.write({{"fit/level2", "error", {1}, {1}, {0.5}, {}}}, progress(1));
+  file.publish();
+  CHECK(std::isnan(store::read_table(path, "fit/level2/error")[0]));
+  CHECK(store::read_table(path, "fit/level2/error")[1] == 0.5);
+  CHECK(store::read_text_attribute(path, "fit/level1/error", "role") == "error");
+  CHECK(store::read_text_attribute(path, "fit/level1/error", "description") == "fit error");
+  CHECK(store::read_text_attribute(path, "", "job_name") == "test-job");
+  CHECK_THROWS_AS(store::read_text_attribute(path, "fit/level1/error", "missing"), RunError);
+}
+
 TEST_CASE("readers see only published states: the result file is replaced whole, never written in place") {
   const auto path = temporary_path("published.h5");
   std::filesystem::remove(path);
