@@ -23,7 +23,7 @@ FitRun::FitRun(const Objective& objective, const Bounds& bounds, const FitOption
 }
 
 FitResult FitRun::run(std::span<const std::vector<double>> warm_starts) {
-  if (!warm_starts.empty()) polish_warm_starts(warm_starts);
+  if (!warm_starts.empty() && options_.polish_warm_starts) polish_warm_starts(warm_starts);
   result_.stop = rounds(warm_starts);
   evaluator_.finalize(best_);
   result_.x = best_.x;

@@ -3,7 +3,8 @@
 // polished by Nelder-Mead with restarts from the DE best, in rounds: a round after the first restarts DE
 // from a fresh population (independent of the earlier rounds unless seed_rounds_with_best), and the
 // best point over all rounds is kept. Warm starts (e.g. the fits of neighbouring cells of a sweep) are
-// first polished by multi-start Nelder-Mead, then seeded into the first round's population.
+// first polished by multi-start Nelder-Mead (unless polish_warm_starts is false), then seeded into the
+// first round's population.
 //
 // Contract:
 //  - every objective evaluation of every phase is counted; evaluations <= max_evaluations always;
@@ -48,6 +49,7 @@ struct FitOptions {
   std::size_t max_rounds = 1000;
   std::size_t stall_rounds = 2;
   bool seed_rounds_with_best = false;  // whether a round after the first seeds DE with the best so far
+  bool polish_warm_starts = true;      // false: warm starts are only seeded into the first round
   ToleranceSchedule tolerance;
   double target = -std::numeric_limits<double>::infinity();  // stop once the best value <= target
 };

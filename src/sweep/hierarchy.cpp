@@ -1,0 +1,64 @@
+#include "pbrfit/sweep/hierarchy.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace pbrfit::sweep {
+namespace {
+
+std::size_t halved(const GridAxis& axis) {
+  if (axis.count <= 1) return axis.count;
+  // edges: ceil((n - 1) / 2) = floor(n / 2) intervals, at least one.
+  if (axis.placement == Placement::edges) return std::max<std::size_t>(axis.count / 2, 1) + 1;
+  return (axis.count + 1) / 2;
+}
+
+std::vector<GridAxis> coarser(const std::vector<GridAxis>& axes) {
+  std::vector<GridAxis> out;
+  for (const auto& axis : axes) out.push_back(axis.with_count(halved(axis)));
+  return out;
+}
+
+bool same_counts(const std::vector<GridAxis>& a, const std::vector<GridAxis>& b) {
+  for (std::size_t d = 0; d < a.size(); ++d)
+    if (a[d].count != b[d].count) return false;
+  return true;
+}
+
+std::size_t nearest_index(const GridAxis& coarse, double value) {
+  std::size_t best = 0;
+  for (std::size_t j = 1; j < coarse.count; ++j)
+    if (std::abs(coarse.value(j) - value) < std::abs(coarse.value(best) - value)) best = j;
+  return best;
+}
+
+}  // namespace
+
+std::size_t max_level_count(const std::vector<GridAxis>& finest) {
+  std::size_t levels = 1;
+  for (auto axes = finest, next = coarser(axes); !same_counts(axes, next); axes = next, next = coarser(axes)) ++levels;
+  return levels;
+}
+
+std::vector<LevelGrid> hierarchy(const std::vector<GridAxis>& finest, std::size_t level_count) {
+  const std::size_t possible = max_level_count(finest);
+  if (level_count < 1 || level_count > possible)
+    throw std::invalid_argument("sweep: this grid allows 1 to " + std::to_string(possible) + " levels, not " +
+                                std::to_string(level_count));
+  std::vector<std::vector<GridAxis>> axes{finest};
+  while (axes.size() < level_count) axes.insert(axes.begin(), coarser(axes.front()));
+  std::vector<LevelGrid> levels;
+  for (auto& level : axes) levels.emplace_back(std::move(level));
+  return levels;
+}
+
+std::size_t nearest_parent(const LevelGrid& fine, std::size_t cell, const LevelGrid& coarse) {
+  const auto at = fine.indices(cell);
+  std::vector<std::size_t> parent(at.size());
+  for (std::size_t d = 0; d < at.size(); ++d)
+    parent[d] = nearest_index(coarse.axes()[d], fine.axes()[d].value(at[d]));
+  return coarse.flat_index(parent);
+}
+
+}  // namespace pbrfit::sweep
