@@ -3,11 +3,12 @@
 #include <stdexcept>
 
 #include "pbrfit/jobs/lut/lut_kind.hpp"
+#include "pbrfit/jobs/sweep/sweep_kind.hpp"
 
 namespace pbrfit::jobs {
 
 const std::vector<JobKind>& job_kinds() {
-  static const std::vector<JobKind> kinds = {lut::lut_kind()};
+  static const std::vector<JobKind> kinds = {lut::lut_kind(), sweep::sweep_kind()};
   return kinds;
 }
 

@@ -1,0 +1,37 @@
+#pragma once
+// What a sweep work item returns: one fit per model of the job, in the job's model order, as bytes for the
+// runtime (checkpoints, messages) and back.
+//
+// Invariant: decode(encode(r), shapes) == r; decode throws RunError for bytes that do not hold exactly
+// one fit of each shape (a damaged or foreign result).
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "pbrfit/core/bytes.hpp"
+
+namespace pbrfit::jobs::sweep {
+
+// Which start a cell's fit came from; the result's `start` table stores these codes.
+enum class StartCode : std::uint8_t { global = 0, default_start = 1, neighbour = 2, parent = 3 };
+inline constexpr const char* start_code_labels = "0=global,1=default,2=neighbour,3=parent";
+
+struct ModelFit {
+  std::vector<double> parameters;
+  double error = 0.0;
+  std::uint64_t evaluations = 0;
+  StartCode start = StartCode::global;
+  bool global_ran = false;
+  std::vector<double> outputs;
+  bool operator==(const ModelFit&) const = default;
+};
+
+struct FitShape {
+  std::size_t parameters = 0;
+  std::size_t outputs = 0;
+};
+
+Bytes encode_cell(const std::vector<ModelFit>& fits);
+std::vector<ModelFit> decode_cell(const Bytes& bytes, const std::vector<FitShape>& shapes);
+
+}  // namespace pbrfit::jobs::sweep

@@ -1,0 +1,29 @@
+#pragma once
+// The problems a `sweep` job can name, each with the keys of the job's `objective` section it reads.
+// A key of `objective` that the chosen problem does not read is refused (sweep_kind.cpp).
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "pbrfit/jobs/sweep/sweep_problem.hpp"
+#include "pbrfit/spec/schema.hpp"
+
+namespace pbrfit::jobs::sweep {
+
+struct ProblemEntry {
+  std::string name;
+  std::string summary;
+  std::vector<std::string> objective_keys;
+  // Throws InputError (at the offending key of `objective`) for settings the problem cannot use.
+  std::function<std::unique_ptr<SweepProblem>(const spec::Section& objective)> make;
+};
+
+const std::vector<ProblemEntry>& problem_catalogue();
+std::vector<std::string> problem_names();
+const ProblemEntry& find_problem(const std::string& name);  // std::logic_error for an unknown name
+
+// The schema of `objective`: every key any problem reads, none with a default (problems choose theirs).
+spec::Schema objective_schema();
+
+}  // namespace pbrfit::jobs::sweep
