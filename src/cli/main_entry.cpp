@@ -39,6 +39,12 @@ int main_entry(int argc, char** argv) {
   auto* status_cmd = app.add_subcommand("status", "state and progress of a result file, also while it runs");
   status_cmd->add_option("result", status_file, "result file (HDF5)")->required();
 
+  ReportOptions report;
+  auto* report_cmd = app.add_subcommand("report", "an HTML page of figures and tables of a result file, also while it runs");
+  report_cmd->add_option("result", report.result_file, "result file (HDF5)")->required();
+  report_cmd->add_option("-o,--out", report.out_dir, "directory for index.html and its figures (default: the result "
+                         "path with .h5 replaced by .report)");
+
   SubmitOptions submit;
   auto* submit_cmd = app.add_subcommand("submit", "submit jobs to Slurm (requeueable, resumed after preemption)");
   submit_cmd->add_option("jobs", submit.job_files, "job files (YAML), one Slurm job each")->required();
@@ -64,6 +70,7 @@ int main_entry(int argc, char** argv) {
   if (*run_cmd) return run_command(run);
   if (*validate_cmd) return validate_command(validate_file);
   if (*submit_cmd) return submit_command(submit);
+  if (*report_cmd) return report_command(report);
   return status_command(status_file);
 }
 

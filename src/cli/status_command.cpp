@@ -2,13 +2,12 @@
 #include <unistd.h>
 
 #include <cerrno>
-#include <chrono>
 #include <cstdio>
 #include <fstream>
 #include <string>
-#include <thread>
 
 #include "exit_on_error.hpp"
+#include "summary_reading.hpp"
 #include "pbrfit/cli/commands.hpp"
 #include "pbrfit/core/error.hpp"
 #include "pbrfit/store/checkpoint_file.hpp"
@@ -17,18 +16,6 @@
 namespace pbrfit::cli {
 
 namespace {
-
-// The writer reopens the file at every flush; a read that lands mid-write is retried.
-store::ResultSummary read_summary_retrying(const std::string& path) {
-  for (int attempt = 0;; ++attempt) {
-    try {
-      return store::read_result_summary(path);
-    } catch (const InputError&) {
-      if (attempt >= 20 || access(path.c_str(), R_OK) != 0) throw;
-      std::this_thread::sleep_for(std::chrono::milliseconds(100));
-    }
-  }
-}
 
 // A process that is gone, or dead and waiting to be reaped (state Z), is not writing.
 bool process_is_gone(std::int64_t pid) {
@@ -50,16 +37,6 @@ std::string state_of(const store::ResultSummary& s, const std::string& path) {
   const bool resumable = access(store::checkpoint_path_for(path).c_str(), R_OK) == 0;
   return resumable ? "interrupted (the job stopped without saying so; its checkpoint can be resumed)"
                    : "interrupted (the job stopped without saying so and left no checkpoint)";
-}
-
-// A result that cannot be read but has a checkpoint beside it is not lost: say how to get it back.
-store::ResultSummary read_summary_or_explain(const std::string& path) {
-  try {
-    return read_summary_retrying(path);
-  } catch (const InputError& error) {
-    if (access(store::checkpoint_path_for(path).c_str(), R_OK) != 0) throw;
-    throw InputError(error.where(), error.message() + "; its checkpoint is intact: `pbrfit run JOB --resume` rebuilds it");
-  }
 }
 
 }  // namespace

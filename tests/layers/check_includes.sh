@@ -20,6 +20,7 @@ forbidden_for() {
     submit) echo "$mpi|$hdf5|$spdlog|$cli" ;;
     jobs) echo "$mpi|$hdf5|$spdlog|$yaml|$cli" ;;
     cli) echo "$mpi|$hdf5|$yaml" ;;
+    report) echo "$mpi|$hdf5|$spdlog|$yaml|$cli|$files|$eigen" ;;  # the cli's Python report: no C++ at all
     *) echo "unknown-layer" ;;
   esac
 }

@@ -1,6 +1,6 @@
 #pragma once
-// The pbrfit command line: run, validate, status, submit. Each returns the process exit code (core/error.hpp)
-// and never lets an exception escape.
+// The pbrfit command line: run, validate, status, submit, report. Each returns the process exit code
+// (core/error.hpp) and never lets an exception escape.
 #include <string>
 #include <vector>
 
@@ -27,10 +27,16 @@ struct SubmitOptions {
   std::string template_file;  // empty: the installed cluster/sbatch.template
 };
 
+struct ReportOptions {
+  std::string result_file;
+  std::string out_dir;  // empty: the result path with .h5 replaced by .report
+};
+
 int run_command(const RunOptions& options);
 int submit_command(const SubmitOptions& options);
 int validate_command(const std::string& job_file);
 int status_command(const std::string& result_file);
+int report_command(const ReportOptions& options);
 
 int main_entry(int argc, char** argv);
 

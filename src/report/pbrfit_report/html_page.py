@@ -1,0 +1,72 @@
+# Static HTML: every text is escaped here (result files can hold anything: markup, quotes, newlines),
+# callers pass raw text and get markup back. The page is one self-contained document: inline style, no
+# script, no external resource; images by relative path.
+import html
+
+STYLE = """
+body { font-family: sans-serif; margin: 2em auto; max-width: 72em; padding: 0 1em; color: #222; }
+table { border-collapse: collapse; margin: 0.5em 0 1em; font-size: 90%; }
+th, td { border: 1px solid #ccc; padding: 0.2em 0.5em; text-align: left; vertical-align: top;
+         white-space: pre-wrap; }
+th { background: #f0f0f0; }
+td.number { text-align: right; font-variant-numeric: tabular-nums; }
+pre { background: #f6f6f6; border: 1px solid #ddd; padding: 0.7em; overflow-x: auto; }
+figure { display: inline-block; margin: 0.5em 1em 1em 0; vertical-align: top; }
+figcaption { font-size: 85%; max-width: 40em; }
+.note { color: #7a4b00; }
+section { border-top: 2px solid #ddd; margin-top: 2em; }
+"""
+
+
+def escape(text):
+    return html.escape(str(text), quote=True)
+
+
+def heading(level, text, anchor=""):
+    ident = f' id="{escape(anchor)}"' if anchor else ""
+    return f"<h{level}{ident}>{escape(text)}</h{level}>"
+
+
+def paragraph(text, css_class=""):
+    cls = f' class="{escape(css_class)}"' if css_class else ""
+    return f"<p{cls}>{escape(text)}</p>"
+
+
+def preformatted(text):
+    return f"<pre>{escape(text)}</pre>"
+
+
+def link(href, text):
+    return f'<a href="{escape(href)}">{escape(text)}</a>'
+
+
+def bullet_list(items_markup):
+    return "<ul>" + "".join(f"<li>{item}</li>" for item in items_markup) + "</ul>"
+
+
+def image_figure(src, alt, caption):
+    return (f'<figure><img src="{escape(src)}" alt="{escape(alt)}">'
+            f"<figcaption>{escape(caption)}</figcaption></figure>")
+
+
+def table(header, rows, numeric_columns=()):
+    """header: texts; rows: lists of texts (escaped here); numeric_columns: indices right-aligned."""
+    head = "".join(f"<th>{escape(h)}</th>" for h in header)
+    body = []
+    for row in rows:
+        cells = []
+        for i, cell in enumerate(row):
+            cls = ' class="number"' if i in numeric_columns else ""
+            cells.append(f"<td{cls}>{escape(cell)}</td>")
+        body.append("<tr>" + "".join(cells) + "</tr>")
+    return f"<table><thead><tr>{head}</tr></thead><tbody>{''.join(body)}</tbody></table>"
+
+
+def section(markup_parts):
+    return "<section>" + "\n".join(markup_parts) + "</section>"
+
+
+def document(title, markup_parts):
+    return ("<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+            f"<title>{escape(title)}</title>\n<style>{STYLE}</style>\n</head>\n<body>\n"
+            + "\n".join(markup_parts) + "\n</body>\n</html>\n")

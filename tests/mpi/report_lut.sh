@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# `pbrfit report` of a lut result: a finished small DFG table (2 ranks) gives RESULT.report/index.html
+# whose every image is a valid PNG and which names every table; a report of a job still running works
+# too and shows the cells not yet computed.
+source "$(dirname "$0")/lib/common.bash"
+source "$PBRFIT_SOURCE_DIR/tests/mpi/lib/report_checks.bash"
+
+note "a finished small DFG table"
+cp "$PBRFIT_SOURCE_DIR/tests/jobs/small-dfg.yaml" job.yaml
+run_ranks 2 run job.yaml -q
+expect_status 0
+set +e
+"$PBRFIT" report result.h5 >out.txt 2>err.txt; STATUS=$?
+set -e
+expect_status 0 "$(cat err.txt)"
+[[ ! -s err.txt ]] || { cat err.txt; fail "report wrote to stderr"; }
+grep -q "result.report/index.html" out.txt || { cat out.txt; fail "report does not say where the page is"; }
+expect_tables_mentioned result.h5 result.report
+expect_valid_images result.report "$TABLES"   # every lut table is a map or a curve
+grep -q "small-dfg" result.report/index.html || fail "the page does not name the job"
+"$H5PY_PYTHON" -c 'import html, sys; sys.exit(("<pre>" + html.escape(open("job.yaml").read()) + "</pre>") not in open(sys.argv[1]).read())' \
+  result.report/index.html || fail "the job text is not on the page, whole, in a <pre>"
+grep -q "visibility" result.report/index.html || fail "the group's attributes are not on the page"
+note "$IMAGES images for $TABLES tables"
+
+note "again into an existing directory: the same page, no figure left over from before"
+touch result.report/fig-9999.png
+"$PBRFIT" report result.h5 --out result.report >/dev/null
+[[ ! -e result.report/fig-9999.png ]] || fail "a stale figure was left in the report directory"
+expect_valid_images result.report "$TABLES"
+
+note "a job still running"
+cp "$PBRFIT_SOURCE_DIR/tests/jobs/long-dfg.yaml" long.yaml
+sed -i 's/^output: .*/output: long.h5/' long.yaml
+start_ranks 1 run long.yaml -q
+wait_for_items long.h5 8
+set +e
+"$PBRFIT" report long.h5 --out live >out.txt 2>err.txt; STATUS=$?
+set -e
+expect_status 0 "$(cat err.txt)"
+expect_valid_images live 1
+grep -q "not yet computed" live/index.html || fail "the report of a running job shows no cell as not yet computed"
+grep -q "running" live/index.html || fail "the report of a running job does not say it runs"
+background_running || fail "the job finished before the report was made; make the test job longer"
+kill -TERM $(rank_pids)
+wait_background
+expect_status 75
+echo "PASS"
