@@ -1,8 +1,10 @@
 #include "pbrfit/brdf/multi_lobe_sg_error.hpp"
 
+#include <cmath>
 #include <stdexcept>
 
 #include "pbrfit/brdf/split_sum_dfg.hpp"
+#include "pbrfit/integrate/compensated_sum.hpp"
 #include "pbrfit/integrate/halton.hpp"
 #include "pbrfit/integrate/mis_estimator.hpp"
 
@@ -40,18 +42,46 @@ MultiLobeSgError::MultiLobeSgError(double alpha, double cos_theta_view, std::siz
   };
   target_squared_norm_ = integrate::integrate_balance_mis(squared, std::span<const LobeStrategy>(&only_target, 1),
                                                           std::span<const std::array<double, 2>>(points_));
+  for (const auto& u : points_) {
+    const ltc::Vector3 w = target_.sample(u[0], u[1]);
+    const auto t = target_.evaluate(w);
+    target_samples_.push_back({w, t.value, t.pdf});
+  }
 }
 
+// One lobe's constants for evaluating value and density with a single exponential.
+struct LobeTerms {
+  ltc::Vector3 axis;
+  double sharpness, amplitude, density_scale;  // value = amplitude e, density = density_scale e
+};
+
+// The balance-heuristic MIS estimate of integrate/mis_estimator.hpp with the target's strategy first, its
+// samples taken from the cache; terms are summed in the same order.
 double MultiLobeSgError::squared_error(const MultiLobeSgParameters& parameters) const {
   const std::vector<SphericalGaussian> lobes = multi_lobe_sg_lobes(parameters, lobe_count_);
-  std::vector<LobeStrategy> strategies{{&target_, nullptr}};
-  for (const SphericalGaussian& lobe : lobes) strategies.push_back({nullptr, &lobe});
-  const auto difference_squared = [&](const ltc::Vector3& w) {
-    const double difference = target_.evaluate(w).value - multi_lobe_sg_value(lobes, w);
-    return difference * difference;
+  std::vector<LobeTerms> terms;
+  for (const SphericalGaussian& lobe : lobes)  // the pdf at the axis is the density's scale (exp(0) = 1)
+    terms.push_back({lobe.axis, lobe.sharpness, lobe.amplitude, lobe.pdf(lobe.axis)});
+  integrate::CompensatedSum sum;
+  const auto add = [&](double target_value, double target_pdf, const ltc::Vector3& w) {
+    double density = target_pdf, kernel = 0.0;
+    for (const LobeTerms& t : terms) {
+      const double e = std::exp(-t.sharpness * (1.0 - w.dot(t.axis)));
+      kernel += t.amplitude * e;
+      density += t.density_scale * e;
+    }
+    const double difference = target_value - kernel;
+    if (density > 0.0) sum.add(difference * difference / density);
   };
-  return integrate::integrate_balance_mis(difference_squared, std::span<const LobeStrategy>(strategies),
-                                          std::span<const std::array<double, 2>>(points_));
+  for (const TargetSample& s : target_samples_) add(s.value, s.pdf, s.direction);
+  for (const SphericalGaussian& lobe : lobes) {
+    for (const auto& u : points_) {
+      const ltc::Vector3 w = lobe.sample(u[0], u[1]);
+      const auto t = target_.evaluate(w);
+      add(t.value, t.pdf, w);
+    }
+  }
+  return sum.value() / static_cast<double>(points_.size());
 }
 
 double MultiLobeSgError::squared_error_normalized(const MultiLobeSgParameters& parameters) const {

@@ -8,7 +8,8 @@
 // sampling, `samples_per_strategy` Halton points each, balance heuristic.
 //
 // Invariants: a pure function of (alpha, cos theta_v, lobe_count, samples, parameters): same inputs, same
-// bits; >= 0; the Halton points are made once by the constructor. The course used 30k-50k samples.
+// bits; >= 0; the Halton points and the target's own samples (direction, value, density) are made once by
+// the constructor, so an estimate evaluates GGX only at the lobes' samples. The course used 30k-50k samples.
 #include <cstddef>
 #include <vector>
 
@@ -35,9 +36,15 @@ class MultiLobeSgError {
   double squared_error_normalized(const MultiLobeSgParameters& parameters) const;
 
  private:
+  struct TargetSample {
+    ltc::Vector3 direction;
+    double value = 0.0;
+    double pdf = 0.0;
+  };
   ltc::GgxTarget target_;
   std::size_t lobe_count_;
   std::vector<std::array<double, 2>> points_;
+  std::vector<TargetSample> target_samples_;
   double target_integral_ = 0.0;
   double target_squared_norm_ = 0.0;
 };
