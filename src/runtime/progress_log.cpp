@@ -3,6 +3,7 @@
 #include <spdlog/spdlog.h>
 
 #include "duration_text.hpp"
+#include "terminal_sink.hpp"
 
 namespace pbrfit::runtime {
 
@@ -20,9 +21,9 @@ void ProgressLog::maybe_log(const RunState& state) {
   const double run_seconds = std::chrono::duration<double>(now - started_).count();
   const double rate = double(done - done_at_start_) / std::max(run_seconds, 1e-9);
   const double eta = rate > 0 ? double(items_total_ - done) / rate : 0.0;
-  spdlog::info("{:5.1f}% ({}/{} items, {:.1f} items/s, ETA {}) {}", 100.0 * double(done) / double(items_total_),
-               done, items_total_, rate, rate > 0 ? duration_text(eta) : "unknown",
-               workload_.headline(state.summary()));
+  log_progress(fmt::format("{:5.1f}% ({}/{} items, {:.1f} items/s, ETA {}) {}", 100.0 * double(done) / double(items_total_),
+                           done, items_total_, rate, rate > 0 ? duration_text(eta) : "unknown",
+                           workload_.headline(state.summary())));
 }
 
 }  // namespace pbrfit::runtime
