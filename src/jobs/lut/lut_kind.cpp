@@ -1,6 +1,7 @@
 #include "pbrfit/jobs/lut/lut_kind.hpp"
 
 #include "pbrfit/jobs/lut/dfg_table.hpp"
+#include "pbrfit/jobs/lut/disney_diffuse_table.hpp"
 
 namespace pbrfit::jobs::lut {
 
@@ -8,7 +9,10 @@ namespace {
 
 spec::Schema lut_schema() {
   spec::Schema s("lut");
-  s.choice("function", {"dfg"}, "the table to compute: dfg = split-sum environment BRDF of GGX").require();
+  s.choice("function", {"dfg", "disney_diffuse"},
+           "the table to compute: dfg = split-sum environment BRDF of GGX; disney_diffuse = SH, beta and ZH of the "
+           "Disney diffuse environment lobe")
+      .require();
   s.choice("visibility", {"height_correlated", "separable", "separable_schlick"},
            "Smith masking-shadowing: height_correlated (Filament), separable (exact Smith G1 G1), "
            "separable_schlick (UE4 / Karis, k = alpha / 2)")
@@ -58,14 +62,30 @@ DfgSettings dfg_settings(const spec::Section& lut) {
   return s;
 }
 
+// disney_diffuse: the DFG-only keys are refused, so a key never silently does nothing.
+DisneyDiffuseSettings disney_settings(const spec::Section& lut) {
+  for (const char* key : {"visibility", "multiple_scattering", "roughness"})
+    if (lut.given(key)) lut.reject(key, "applies to function 'dfg' only");
+  const DfgSettings common = dfg_settings(lut);
+  DisneyDiffuseSettings s;
+  s.n_dot_v_count = common.n_dot_v_count;
+  s.roughness_count = common.roughness_count;
+  s.placement = common.placement;
+  s.integration = common.integration;
+  return s;
+}
+
 std::unique_ptr<runtime::Workload> make_lut(const spec::JobSpec& job) {
+  if (job.kind_section.get_string("function") == "disney_diffuse")
+    return std::make_unique<DisneyDiffuseTable>(disney_settings(job.kind_section));
   return std::make_unique<DfgTable>(dfg_settings(job.kind_section));
 }
 
 }  // namespace
 
 JobKind lut_kind() {
-  return {"lut", "reference tables by deterministic adaptive integration (function: dfg)", lut_schema(), make_lut};
+  return {"lut", "reference tables by deterministic adaptive integration (function: dfg, disney_diffuse)", lut_schema(),
+          make_lut};
 }
 
 }  // namespace pbrfit::jobs::lut

@@ -1,17 +1,18 @@
 #include "pbrfit/jobs/sweep/problem_catalogue.hpp"
 
+#include <limits>
 #include <stdexcept>
 
 #include "pbrfit/core/error.hpp"
 #include "pbrfit/jobs/sweep/ltc_ggx_problem.hpp"
+#include "pbrfit/jobs/sweep/objective_keys.hpp"
+#include "pbrfit/jobs/sweep/multi_lobe_sg_problem.hpp"
+#include "pbrfit/jobs/sweep/parallax_problem.hpp"
+#include "pbrfit/jobs/sweep/sphere_light_problem.hpp"
 #include "pbrfit/store/atomic_file.hpp"
 
 namespace pbrfit::jobs::sweep {
 namespace {
-
-std::size_t count_or(const spec::Section& s, const std::string& key, std::size_t fallback) {
-  return s.given(key) ? std::size_t(s.get_int(key)) : fallback;
-}
 
 // The published table the LTC anchors compare with; null when the data file is not there.
 std::shared_ptr<const ltc::PublishedLtcTable> published_ltc_table() {
@@ -30,7 +31,8 @@ std::shared_ptr<const ltc::PublishedLtcTable> published_ltc_table() {
   return table;
 }
 
-std::unique_ptr<SweepProblem> make_ltc(const spec::Section& objective) {
+std::unique_ptr<SweepProblem> make_ltc(const spec::Section& sweep) {
+  const auto& objective = sweep.get_section("objective");
   LtcGgxSettings settings;
   settings.objective_points = count_or(objective, "samples", settings.objective_points);
   settings.metric_points = count_or(objective, "judge_samples", settings.metric_points);
@@ -38,11 +40,51 @@ std::unique_ptr<SweepProblem> make_ltc(const spec::Section& objective) {
   return make_ltc_ggx_problem(settings);
 }
 
+std::unique_ptr<SweepProblem> make_sphere_light(const spec::Section& sweep) {
+  const auto& objective = sweep.get_section("objective");
+  SphereLightSettings settings;
+  settings.norm_p = norm_p(objective);
+  settings.view_panels = objective.given("views") ? int(objective.get_int("views")) : settings.view_panels;
+  settings.truth = integration(objective, 1e-4);
+  return make_sphere_light_problem(settings);
+}
+
+std::unique_ptr<SweepProblem> make_multi_lobe_sg(const spec::Section& sweep) {
+  const auto& objective = sweep.get_section("objective");
+  MultiLobeSgSettings settings;
+  settings.lobes = count_or(objective, "lobes", settings.lobes);
+  settings.samples_per_strategy = count_or(objective, "samples", settings.samples_per_strategy);
+  return make_multi_lobe_sg_problem(settings);
+}
+
+std::unique_ptr<SweepProblem> make_parallax(const spec::Section& sweep, ParallaxStudy study) {
+  const auto& objective = sweep.get_section("objective");
+  ParallaxSettings settings;
+  settings.study = study;
+  if (objective.given("window")) settings.window = objective.get_number("window");
+  if (objective.given("distance")) settings.distance = objective.get_number("distance");
+  settings.integration = integration(objective, 1e-5);
+  settings.coarse_tolerance = coarse_tolerance(objective, settings.integration.abs_tolerance, 1e-3);
+  return make_parallax_problem(settings);
+}
+
 }  // namespace
 
 const std::vector<ProblemEntry>& problem_catalogue() {
   static const std::vector<ProblemEntry> entries = {
       {"ltc_ggx", "isotropic LTC table of GGX (Heitz et al. 2016)", {"samples", "judge_samples"}, make_ltc},
+      {"sphere_light", "GGX lit by a spherical light: roughness modification, capped, representative point models",
+       {"norm", "tolerance", "max_evaluations", "views"}, make_sphere_light},
+      {"multi_lobe_sg", "multi-lobe spherical Gaussian kernel for GGX environment lighting", {"samples", "lobes"},
+       make_multi_lobe_sg},
+      {"parallax_distance", "parallax-corrected probes: roughness of a perpendicular lobe over roughness x distance",
+       {"tolerance", "coarse_tolerance", "max_evaluations", "window"},
+       [](const spec::Section& o) { return make_parallax(o, ParallaxStudy::distance); }},
+      {"parallax_angle", "parallax-corrected probes: roughness and shift of a perpendicular lobe over roughness x angle",
+       {"tolerance", "coarse_tolerance", "max_evaluations", "window", "distance"},
+       [](const spec::Section& o) { return make_parallax(o, ParallaxStudy::angle); }},
+      {"expression", "any model stated as an expression, fitted to a target expression over a domain",
+       {"norm", "integrator", "samples", "tolerance", "coarse_tolerance", "max_evaluations"}, make_expression},
   };
   return entries;
 }
@@ -63,6 +105,18 @@ spec::Schema objective_schema() {
   spec::Schema s("objective");
   s.integer("samples", "points per sampling strategy of the objective's quasi-Monte Carlo estimate").range(16, 1 << 22);
   s.integer("judge_samples", "points per strategy of the finer estimate the reported errors use").range(16, 1 << 22);
+  s.choice("norm", {"L1", "L2", "L3", "Linf"}, "the error norm between target and model");
+  s.choice("integrator", {"adaptive", "qmc"}, "adaptive cubature at the optimizer's tolerance, or fixed QMC points");
+  s.number("tolerance", "absolute (or, where the problem says so, relative) tolerance of the error's integrals")
+      .range(1e-14, 1.0);
+  s.number("coarse_tolerance", "the tolerance while the global search still spans the whole box (cooperative "
+                               "accuracy); it tightens to 'tolerance' as the search converges")
+      .range(1e-14, 1.0);
+  s.integer("max_evaluations", "integrand evaluations allowed per integral").range(100, 1'000'000'000);
+  s.integer("views", "panels of 15 x 15 view nodes per direction over the view hemisphere").range(1, 16);
+  s.integer("lobes", "spherical Gaussian lobes").range(2, 16);
+  s.number("window", "half-size of the window on the plane the projected lobes are compared over").range(0.01, 100.0);
+  s.number("distance", "the source lobe's distance to the plane").range(0.01, 100.0);
   return s;
 }
 

@@ -1,6 +1,7 @@
 #include "pbrfit/jobs/sweep/sweep_kind.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <set>
 #include <stdexcept>
 
@@ -12,6 +13,25 @@ namespace pbrfit::jobs::sweep {
 namespace {
 
 using pbrfit::sweep::GridAxis;
+
+// An engine's message without its "module: " prefix, to follow the key it is reported at.
+std::string engine_reason(const std::exception& e) {
+  const std::string text = e.what();
+  const auto colon = text.find(": ");
+  return colon != std::string::npos && colon < 12 ? text.substr(colon + 2) : text;
+}
+
+std::string number_text(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
+
+// "; did you mean 'x'?" when a candidate is close.
+std::string hint(const std::string& word, const std::vector<std::string>& candidates) {
+  const std::string closest = spec::closest_match(word, candidates);
+  return closest.empty() ? "" : "; did you mean '" + closest + "'?";
+}
 
 std::string listed(const std::vector<std::string>& names) {
   std::string out;
@@ -38,7 +58,8 @@ std::vector<std::size_t> chosen_models(const spec::Section& s, const std::vector
   }
   for (const auto& name : s.get_string_list("models")) {
     const auto found = std::ranges::find(names, name);
-    if (found == names.end()) s.reject("models", "names '" + name + "', not a model of the problem (" + listed(names) + ")");
+    if (found == names.end())
+      s.reject("models", "names '" + name + "', not a model of the problem (" + listed(names) + ")" + hint(name, names));
     const auto index = std::size_t(found - names.begin());
     if (std::ranges::find(chosen, index) != chosen.end()) s.reject("models", "names '" + name + "' twice");
     chosen.push_back(index);
@@ -53,13 +74,13 @@ void apply_axis(const spec::Section& item, const ProblemAxis& info, GridAxis& ax
   if (item.given("samples"))
     axis.placement = item.get_string("samples") == "centres" ? pbrfit::sweep::Placement::centres
                                                                : pbrfit::sweep::Placement::edges;
-  const auto range = "must lie in [" + std::to_string(info.min) + ", " + std::to_string(info.max) + "] for this problem";
+  const auto range = "must lie in [" + number_text(info.min) + ", " + number_text(info.max) + "] for this problem";
   if (axis.lower < info.min || axis.lower > info.max) item.reject(item.given("from") ? "from" : "to", range);
   if (axis.upper < info.min || axis.upper > info.max) item.reject(item.given("to") ? "to" : "from", range);
   try {
     pbrfit::sweep::validate(axis);
   } catch (const std::invalid_argument& e) {
-    item.reject(item.given("count") ? "count" : "name", std::string("gives an invalid axis: ") + e.what());
+    item.reject(item.given("count") ? "count" : "name", "gives an invalid axis: " + engine_reason(e));
   }
 }
 
@@ -74,7 +95,8 @@ std::vector<GridAxis> grid_axes(const spec::Section& s, const std::vector<Proble
   for (const auto& item : s.get_section_list("axes")) {
     const std::string& name = item.get_string("name");
     const auto found = std::ranges::find(names, name);
-    if (found == names.end()) item.reject("name", "is '" + name + "', not an axis of the problem (" + listed(names) + ")");
+    if (found == names.end())
+      item.reject("name", "is '" + name + "', not an axis of the problem (" + listed(names) + ")" + hint(name, names));
     if (!seen.insert(name).second) item.reject("name", "is '" + name + "' a second time");
     const auto d = std::size_t(found - names.begin());
     apply_axis(item, infos[d], axes[d]);
@@ -90,7 +112,7 @@ std::optional<pbrfit::sweep::Marching> marching(const spec::Section& s, const st
     if (axes[d].name == name) return pbrfit::sweep::Marching{d, march.get_bool("reverse")};
   std::vector<std::string> names;
   for (const auto& a : axes) names.push_back(a.name);
-  march.reject("axis", "is '" + name + "', not an axis of the problem (" + listed(names) + ")");
+  march.reject("axis", "is '" + name + "', not an axis of the problem (" + listed(names) + ")" + hint(name, names));
 }
 
 void apply_parameter(const spec::Section& item, optimize::Parameter& p) {
@@ -104,7 +126,8 @@ void apply_parameter(const spec::Section& item, optimize::Parameter& p) {
   try {
     optimize::validate(p);
   } catch (const std::invalid_argument& e) {
-    item.reject(item.given("lower") ? "lower" : item.given("upper") ? "upper" : "transform", e.what());
+    item.reject(item.given("lower") ? "lower" : item.given("upper") ? "upper" : "transform",
+                "gives an invalid parameter: " + engine_reason(e));
   }
 }
 
@@ -143,6 +166,13 @@ pbrfit::sweep::CellFitOptions fit_options(const spec::Section& fit) {
   return o;
 }
 
+// Keys that only problem `expression` reads.
+void reject_expression_keys(const spec::Section& s) {
+  if (s.has("expression")) s.reject("expression", "applies to problem 'expression' only");
+  for (const auto& item : s.get_section_list("parameters"))
+    if (item.given("start")) item.reject("start", "applies to problem 'expression' only");
+}
+
 std::unique_ptr<runtime::Workload> make_sweep(const spec::JobSpec& job) {
   return std::make_unique<SweepWorkload>(sweep_settings(job.kind_section));
 }
@@ -151,10 +181,10 @@ std::unique_ptr<runtime::Workload> make_sweep(const spec::JobSpec& job) {
 
 SweepSettings sweep_settings(const spec::Section& s) {
   const ProblemEntry& entry = find_problem(s.get_string("problem"));
-  const auto& objective = s.get_section("objective");
-  reject_unused_objective_keys(objective, entry);
+  reject_unused_objective_keys(s.get_section("objective"), entry);
+  if (entry.name != "expression") reject_expression_keys(s);
   SweepSettings settings;
-  settings.problem = entry.make(objective);
+  settings.problem = entry.make(s);
   const auto models = settings.problem->models();
   settings.models = chosen_models(s, models);
   settings.parameters = parameters(s, models, settings.models);
@@ -166,6 +196,7 @@ SweepSettings sweep_settings(const spec::Section& s) {
                            std::to_string(possible) + " levels");
   settings.marching = marching(s, settings.axes);
   settings.fit = fit_options(s.get_section("fit"));
+  settings.fit.global.tolerance = settings.problem->tolerance_schedule();
   return settings;
 }
 

@@ -29,6 +29,7 @@ spec::Schema parameter_schema() {
   s.number("lower", "lower bound (default: the model's)");
   s.number("upper", "upper bound (default: the model's)");
   s.choice("transform", {"linear", "log", "cosine"}, "the domain the optimizer searches it in");
+  s.number("start", "problem 'expression': the default start (default: the middle of the bounds)");
   return s;
 }
 
@@ -61,6 +62,7 @@ spec::Schema sweep_schema() {
   s.section_list("parameters", parameter_schema(), 0, spec::unbounded, "changes to the models' parameter bounds");
   s.section("fit", fit_schema(), "how each cell is fitted");
   s.section("objective", objective_schema(), "the problem's error estimate (keys depend on the problem)");
+  s.section("expression", expression_schema(), "problem 'expression': the domain, the target and the model");
   return s;
 }
 

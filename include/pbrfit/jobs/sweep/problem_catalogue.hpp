@@ -15,8 +15,9 @@ struct ProblemEntry {
   std::string name;
   std::string summary;
   std::vector<std::string> objective_keys;
-  // Throws InputError (at the offending key of `objective`) for settings the problem cannot use.
-  std::function<std::unique_ptr<SweepProblem>(const spec::Section& objective)> make;
+  // From the job's `sweep` section (its `objective`, and for `expression` its own keys); throws InputError
+  // at the offending key for settings the problem cannot use.
+  std::function<std::unique_ptr<SweepProblem>(const spec::Section& sweep)> make;
 };
 
 const std::vector<ProblemEntry>& problem_catalogue();
@@ -25,5 +26,9 @@ const ProblemEntry& find_problem(const std::string& name);  // std::logic_error 
 
 // The schema of `objective`: every key any problem reads, none with a default (problems choose theirs).
 spec::Schema objective_schema();
+
+// Problem `expression` (expression_problem.hpp) from the job's `sweep` section.
+std::unique_ptr<SweepProblem> make_expression(const spec::Section& sweep);
+spec::Schema expression_schema();
 
 }  // namespace pbrfit::jobs::sweep

@@ -7,12 +7,14 @@
 // target() is a pure function of the cell's coordinates (axis values, in the order of axes()); a target's
 // problem() and outputs() are pure. outputs() returns ModelInfo::output_width() values in output order.
 #include <cstddef>
+#include <map>
 #include <memory>
 #include <span>
 #include <string>
 #include <vector>
 
 #include "pbrfit/optimize/parameter_transform.hpp"
+#include "pbrfit/optimize/tolerance_schedule.hpp"
 #include "pbrfit/store/result_layout.hpp"
 #include "pbrfit/sweep/cell_fit.hpp"
 #include "pbrfit/sweep/grid_axis.hpp"
@@ -63,6 +65,9 @@ class SweepProblem {
   virtual std::vector<ModelInfo> models() const = 0;
   // Settings a reader needs (the objective, its integrator and tolerances), as group attributes.
   virtual std::map<std::string, std::string> attributes() const = 0;
+  // The tolerance schedule the fitter passes to the objective (cooperative accuracy); objectives that
+  // ignore their tolerance keep the default.
+  virtual optimize::ToleranceSchedule tolerance_schedule() const { return optimize::ToleranceSchedule::constant(0.0); }
   // Throws RunError when the cell's target cannot be computed (e.g. an integral misses its tolerance).
   virtual std::unique_ptr<CellTarget> target(std::span<const double> coordinates) const = 0;
 };
