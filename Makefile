@@ -25,6 +25,7 @@ bench: build
 	tests/benchmarks/dfg_threads.sh $(BUILD)/pbrfit
 	tests/benchmarks/runtime_state.sh $(BUILD)/tests/pbrfit_runtime_probe
 	$(BUILD)/tests/bench_optimizers
+	tests/benchmarks/sweep_benchmark.sh $(BUILD)/pbrfit
 
 # Fault injection, 20 rounds of each fault (about 15 minutes; not part of test). Figures: docs/RELIABILITY.md.
 soak: build
