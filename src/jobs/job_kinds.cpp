@@ -4,11 +4,12 @@
 
 #include "pbrfit/jobs/lut/lut_kind.hpp"
 #include "pbrfit/jobs/sweep/sweep_kind.hpp"
+#include "pbrfit/jobs/symreg/symreg_kind.hpp"
 
 namespace pbrfit::jobs {
 
 const std::vector<JobKind>& job_kinds() {
-  static const std::vector<JobKind> kinds = {lut::lut_kind(), sweep::sweep_kind()};
+  static const std::vector<JobKind> kinds = {lut::lut_kind(), sweep::sweep_kind(), symreg::symreg_kind()};
   return kinds;
 }
 

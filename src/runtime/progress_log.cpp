@@ -14,6 +14,7 @@ ProgressLog::ProgressLog(const Workload& workload, double interval_seconds, std:
       done_at_start_(done_at_start) {}
 
 void ProgressLog::maybe_log(const RunState& state) {
+  if (!work_at_start_) work_at_start_ = workload_.work_done(state.summary());  // the first call comes before any work
   const auto now = Clock::now();
   if (std::chrono::duration<double>(now - last_).count() < interval_seconds_) return;
   last_ = now;
@@ -21,8 +22,12 @@ void ProgressLog::maybe_log(const RunState& state) {
   const double run_seconds = std::chrono::duration<double>(now - started_).count();
   const double rate = double(done - done_at_start_) / std::max(run_seconds, 1e-9);
   const double eta = rate > 0 ? double(items_total_ - done) / rate : 0.0;
-  log_progress(fmt::format("{:5.1f}% ({}/{} items, {:.1f} items/s, ETA {}) {}", 100.0 * double(done) / double(items_total_),
-                           done, items_total_, rate, rate > 0 ? duration_text(eta) : "unknown",
+  const std::string unit = workload_.work_unit();
+  const std::string work_rate =
+      unit.empty() ? "" : fmt::format(", {:.3g} {}/s", (workload_.work_done(state.summary()) - *work_at_start_) /
+                                                         std::max(run_seconds, 1e-9), unit);
+  log_progress(fmt::format("{:5.1f}% ({}/{} items, {:.1f} items/s{}, ETA {}) {}", 100.0 * double(done) / double(items_total_),
+                           done, items_total_, rate, work_rate, rate > 0 ? duration_text(eta) : "unknown",
                            workload_.headline(state.summary())));
 }
 

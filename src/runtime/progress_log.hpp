@@ -3,6 +3,7 @@
 // kind's headline. Private to the runtime.
 #include <chrono>
 #include <cstdint>
+#include <optional>
 
 #include "pbrfit/runtime/workload.hpp"
 #include "run_state.hpp"
@@ -21,6 +22,7 @@ class ProgressLog {
   const std::uint64_t items_total_, done_at_start_;
   const Clock::time_point started_ = Clock::now();
   Clock::time_point last_ = started_;
+  std::optional<double> work_at_start_;  // Workload::work_done when the run began
 };
 
 }  // namespace pbrfit::runtime

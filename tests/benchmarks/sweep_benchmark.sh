@@ -19,7 +19,7 @@ trap 'rm -rf "$OUT"' EXIT
 timed_run() {
   local job=$1 ranks=$2 name=$3 start end
   start=$(date +%s.%N)
-  mpirun "${FLAGS[@]}" -np "$ranks" "$PBRFIT" run "$job" --output "$OUT/$name.h5" --threads 1 -q
+  mpirun "${FLAGS[@]}" -np "$ranks" "$PBRFIT" run "$job" --output "$OUT/$name.h5" --threads 1 --force -q
   end=$(date +%s.%N)
   awk -v a="$start" -v b="$end" 'BEGIN {printf "%.2f", b - a}'
 }
@@ -57,7 +57,7 @@ sweep:
   axes: $axes
   levels: $levels
   march: {axis: $march}
-  fit: {global_search: when_poor, poor_absolute: $extra, max_evaluations: 3000}
+  fit: {global_search: when_poor, poor_ratio: 3, poor_absolute: $extra, warm_evaluations: 200, max_evaluations: 3000}
 YAML
   cat > "$OUT/cold.yaml" <<YAML
 name: cold

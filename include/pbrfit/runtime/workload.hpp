@@ -73,6 +73,10 @@ class Workload {
   virtual void fold_summary(Bytes& /*summary*/, WorkItemId /*id*/, const Bytes& /*result*/) const {}
   // One line for progress logs and `pbrfit status`, from the summary.
   virtual std::string headline(const Bytes& summary) const = 0;
+  // A count of work the summary holds (e.g. program evaluations) and its unit; with a unit the progress
+  // line also reports its rate ("1.2e+06 evaluations/s"). Default: none.
+  virtual double work_done(const Bytes& /*summary*/) const { return 0.0; }
+  virtual std::string work_unit() const { return {}; }
 
   std::uint64_t total_items() const;
 };

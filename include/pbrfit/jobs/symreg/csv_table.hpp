@@ -1,0 +1,33 @@
+#pragma once
+// A numeric CSV table: a header line of column names, then rows of numbers separated by commas (spaces
+// around fields ignored, '#' lines and empty lines skipped, CRLF accepted).
+//
+// Contract: parse_csv throws InputError at FILE:LINE:COL for a field that is not a finite number, a row
+// with another number of fields than the header, a duplicate or empty column name, or no data rows.
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "pbrfit/core/error.hpp"
+
+namespace pbrfit::jobs::symreg {
+
+class CsvTable {
+ public:
+  CsvTable(std::string file, std::vector<std::string> names, std::vector<std::vector<double>> columns)
+      : file_(std::move(file)), names_(std::move(names)), columns_(std::move(columns)) {}
+
+  const std::vector<std::string>& names() const { return names_; }
+  std::size_t rows() const { return columns_.empty() ? 0 : columns_[0].size(); }
+  // Throws InputError at `where` (the job key naming it) for a column the table does not have.
+  const std::vector<double>& column(const std::string& name, const SourcePosition& where) const;
+
+ private:
+  std::string file_;
+  std::vector<std::string> names_;
+  std::vector<std::vector<double>> columns_;
+};
+
+CsvTable parse_csv(std::string_view text, const std::string& file);
+
+}  // namespace pbrfit::jobs::symreg

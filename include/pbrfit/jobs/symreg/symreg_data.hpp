@@ -1,0 +1,35 @@
+#pragma once
+// The data of a symbolic-regression job, loaded once per process and shared read-only by its threads: one
+// training set per output (and, for built-in generators, a fresh test set), with the names of the inputs.
+// With cross_inputs (Pesce & Iwanicki 2015, section 5.3) every other output is an extra input of each.
+//
+// Invariants: at least one output; every dataset passed gp::validate; inputs.size() equals the datasets'
+// input count; names are unique within an output's inputs.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "pbrfit/gp/dataset.hpp"
+#include "pbrfit/spec/schema.hpp"
+
+namespace pbrfit::jobs::symreg {
+
+struct SymregOutput {
+  std::string name;
+  std::vector<std::string> inputs;
+  gp::Dataset train;
+  gp::Dataset test;  // empty (0 rows) unless the source can draw fresh points
+};
+
+struct SymregData {
+  std::vector<SymregOutput> outputs;
+  std::string source;  // where the data came from, for the result's attributes
+};
+
+// From the job's `dataset` section: exactly one of `generator`, `csv` or `result`. Throws InputError at
+// the offending key, naming the data file and, for CSV, the line and column of a bad value.
+std::shared_ptr<const SymregData> load_symreg_data(const spec::Section& dataset);
+
+spec::Schema dataset_schema();
+
+}  // namespace pbrfit::jobs::symreg

@@ -1,0 +1,71 @@
+// The running summary of a symbolic-regression job (symreg_workload.hpp), in the style of PySR's progress
+// lines: the generation reached, the evaluations spent, and per output the best error found at each cost.
+// Folded in any order: sums, maxima and per-cost minima.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "pbrfit/jobs/symreg/symreg_workload.hpp"
+
+namespace pbrfit::jobs::symreg {
+namespace {
+
+constexpr std::size_t summary_outputs = 4;
+constexpr std::size_t cost_buckets = 64;  // cost rounded to an integer, the last bucket holding the rest
+
+struct Summary {
+  std::uint64_t evaluations = 0;
+  std::uint64_t generation = 0;
+  std::uint64_t seen[summary_outputs] = {};  // bit b: bucket b holds an error
+  double best[summary_outputs][cost_buckets] = {};
+};
+
+std::size_t bucket_of(double cost) { return std::min<std::size_t>(std::size_t(std::max(std::lround(cost), 0L)), cost_buckets - 1); }
+
+}  // namespace
+
+void SymregWorkload::fold_summary(Bytes& summary, WorkItemId id, const Bytes& result) const {
+  if (is_final(id.stage)) return;
+  auto sum = runtime::summary_as<Summary>(summary);
+  const std::size_t o = output_of(id.item);
+  const IslandEpoch epoch = decode_epoch(result, input_count(o));
+  sum.evaluations += epoch.evaluations;
+  sum.generation = std::max(sum.generation, epoch.state.population.generation);
+  if (o < summary_outputs) {
+    for (const auto& entry : epoch.state.front) {
+      const std::size_t b = bucket_of(entry.fitness.cost);
+      const bool has = (sum.seen[o] >> b) & 1u;
+      if (!has || entry.fitness.error < sum.best[o][b]) sum.best[o][b] = entry.fitness.error;
+      sum.seen[o] |= std::uint64_t(1) << b;
+    }
+  }
+  runtime::store_summary(summary, sum);
+}
+
+std::string SymregWorkload::headline(const Bytes& summary) const {
+  const auto sum = runtime::summary_as<Summary>(summary);
+  if (sum.evaluations == 0) return "no generations yet";
+  char text[160];
+  std::snprintf(text, sizeof text, "generation %llu, %.3g evaluations", static_cast<unsigned long long>(sum.generation),
+                double(sum.evaluations));
+  std::string line = text;
+  for (std::size_t o = 0; o < settings_.data->outputs.size() && o < summary_outputs; ++o) {
+    line += "; " + settings_.data->outputs[o].name + " best error by cost";
+    double previous = HUGE_VAL;
+    int shown = 0;
+    for (std::size_t b = 0; b < cost_buckets && shown < 8; ++b) {
+      if (!((sum.seen[o] >> b) & 1u) || !(sum.best[o][b] < previous)) continue;
+      previous = sum.best[o][b];
+      std::snprintf(text, sizeof text, " %zu: %.3g", b, previous);
+      line += text;
+      ++shown;
+    }
+  }
+  return line;
+}
+
+double SymregWorkload::work_done(const Bytes& summary) const {
+  return double(runtime::summary_as<Summary>(summary).evaluations);
+}
+
+}  // namespace pbrfit::jobs::symreg
