@@ -46,6 +46,35 @@ cp "$PBRFIT_SOURCE_DIR/tests/jobs/small-sphere-light.yaml" light.yaml
 GROUPS_TO_COMPARE=(/roughness_modification /capped_roughness /representative_point /smoothed_representative_point)
 compare_layouts light.yaml
 
+/usr/bin/python3 -c "
+import h5py, numpy as np
+f = h5py.File('light-ref.h5', 'r')
+fine, mean = f['capped_roughness/level0'], f['capped_roughness/level0_mean_over_incidence']
+assert mean['cap'].shape == (2, 2)
+assert np.allclose(mean['cap'][...], fine['cap'][...].mean(axis=2)), 'projection is the mean over incidence'
+assert np.allclose(mean['error_std'][...], fine['error'][...].std(axis=2, ddof=1))
+" || fail "the projection over incidence is not the mean of the fits"
+
+for problem in multi_lobe_sg parallax_distance parallax_angle; do
+  cat > "$problem.yaml" <<YAML
+name: $problem
+kind: sweep
+output: result.h5
+sweep:
+  problem: $problem
+  axes: [{name: roughness, from: 0.4, to: 0.8, count: 2}]
+  fit: {global_search: always, max_evaluations: 120, warm_evaluations: 30}
+YAML
+done
+sed -i 's/  axes: \[{name: roughness, from: 0.4, to: 0.8, count: 2}\]/  axes: [{name: roughness, from: 0.4, to: 0.8, count: 2}, {name: view_angle, count: 2}]\n  objective: {samples: 256, lobes: 3}/' multi_lobe_sg.yaml
+sed -i 's/  axes: \[{name: roughness, from: 0.4, to: 0.8, count: 2}\]/  axes: [{name: roughness, from: 0.4, to: 0.8, count: 2}, {name: distance, count: 2}]\n  objective: {tolerance: 1.0e-4}/' parallax_distance.yaml
+sed -i 's/  axes: \[{name: roughness, from: 0.4, to: 0.8, count: 2}\]/  axes: [{name: roughness, from: 0.4, to: 0.8, count: 2}, {name: angle, count: 2}]\n  objective: {tolerance: 1.0e-4}/' parallax_angle.yaml
+GROUPS_TO_COMPARE=(/free_amplitude /normalized)
+compare_layouts multi_lobe_sg.yaml
+GROUPS_TO_COMPARE=(/perpendicular_lobe)
+compare_layouts parallax_distance.yaml
+compare_layouts parallax_angle.yaml
+
 cp "$PBRFIT_SOURCE_DIR/jobs/schlick-fresnel.yaml" fresnel.yaml
 GROUPS_TO_COMPARE=(/model)
 compare_layouts fresnel.yaml

@@ -115,6 +115,22 @@ std::optional<pbrfit::sweep::Marching> marching(const spec::Section& s, const st
   march.reject("axis", "is '" + name + "', not an axis of the problem (" + listed(names) + ")" + hint(name, names));
 }
 
+std::vector<std::size_t> projections(const spec::Section& s, const std::vector<GridAxis>& axes) {
+  std::vector<std::string> names;
+  for (const auto& a : axes) names.push_back(a.name);
+  std::vector<std::size_t> out;
+  for (const auto& name : s.get_string_list("projections")) {
+    const auto found = std::ranges::find(names, name);
+    if (found == names.end())
+      s.reject("projections", "names '" + name + "', not an axis of the problem (" + listed(names) + ")" + hint(name, names));
+    const auto d = std::size_t(found - names.begin());
+    if (std::ranges::find(out, d) != out.end()) s.reject("projections", "names '" + name + "' twice");
+    if (axes.size() < 2) s.reject("projections", "needs a grid of at least two axes");
+    out.push_back(d);
+  }
+  return out;
+}
+
 void apply_parameter(const spec::Section& item, optimize::Parameter& p) {
   if (item.given("lower")) p.lower = item.get_number("lower");
   if (item.given("upper")) p.upper = item.get_number("upper");
@@ -195,6 +211,7 @@ SweepSettings sweep_settings(const spec::Section& s) {
     s.reject("levels", "is " + std::to_string(settings.levels) + ", but this grid can be halved into at most " +
                            std::to_string(possible) + " levels");
   settings.marching = marching(s, settings.axes);
+  settings.projections = projections(s, settings.axes);
   settings.fit = fit_options(s.get_section("fit"));
   settings.fit.global.tolerance = settings.problem->tolerance_schedule();
   return settings;

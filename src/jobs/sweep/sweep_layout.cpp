@@ -90,9 +90,11 @@ store::Group SweepWorkload::level_group(std::size_t m, std::uint32_t level) cons
 
 store::ResultLayout SweepWorkload::layout() const {
   store::ResultLayout layout;
-  for (std::size_t m = 0; m < models_.size(); ++m)
+  for (std::size_t m = 0; m < models_.size(); ++m) {
     for (std::uint32_t level = 0; level < schedule_.levels().size(); ++level)
       layout.groups.push_back(level_group(m, level));
+    for (std::size_t p = 0; p < settings_.projections.size(); ++p) layout.groups.push_back(projection_group(m, p));
+  }
   return layout;
 }
 

@@ -60,6 +60,8 @@ spec::Schema sweep_schema() {
   s.integer("levels", "levels of the hierarchy, coarse to fine; the last is the requested grid").range(1, 32).defaults_to(std::int64_t{1});
   s.section("march", march_schema(), "marching order within each level (default: none)");
   s.section_list("parameters", parameter_schema(), 0, spec::unbounded, "changes to the models' parameter bounds");
+  s.string_list("projections", 0, 16, "axes to average the last level's fits over (a table each)")
+      .defaults_to(std::vector<std::string>{});
   s.section("fit", fit_schema(), "how each cell is fitted");
   s.section("objective", objective_schema(), "the problem's error estimate (keys depend on the problem)");
   s.section("expression", expression_schema(), "problem 'expression': the domain, the target and the model");

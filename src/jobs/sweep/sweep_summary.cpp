@@ -42,6 +42,7 @@ void fold(ModelSummary& s, const ModelFit& fit) {
 }  // namespace
 
 void SweepWorkload::fold_summary(Bytes& summary, WorkItemId id, const Bytes& result) const {
+  if (is_projection(id.stage)) return;
   auto sum = runtime::summary_as<Summary>(summary);  // value-initialized: best errors start at +inf
   const auto fits = decode_cell(result, shapes_);
   ++sum.cells;

@@ -45,7 +45,16 @@ std::string SweepWorkload::group_name(std::size_t model, std::uint32_t level) co
   return models_[model].name + "/level" + std::to_string(level);
 }
 
+std::uint32_t SweepWorkload::stage_count() const {
+  return schedule_.stage_count() + (settings_.projections.empty() ? 0 : 1);
+}
+
+std::uint64_t SweepWorkload::item_count(std::uint32_t stage) const {
+  return is_projection(stage) ? settings_.projections.size() : schedule_.stages()[stage].cells.size();
+}
+
 Bytes SweepWorkload::item_input(std::uint32_t stage, std::uint64_t item, const ItemResults& kept) const {
+  if (is_projection(stage)) return projection_input(kept);
   const CellRef cell = schedule_.cell_of(stage, item);
   const auto sources = schedule_.sources(cell);
   ByteWriter out;
@@ -60,6 +69,7 @@ Bytes SweepWorkload::item_input(std::uint32_t stage, std::uint64_t item, const I
 }
 
 Bytes SweepWorkload::compute(const runtime::ItemTask& task) const {
+  if (is_projection(task.id.stage)) return project(task);
   const CellRef cell = schedule_.cell_of(task.id.stage, task.id.item);
   ByteReader input(task.input);
   std::vector<StartCode> codes;
@@ -83,6 +93,7 @@ Bytes SweepWorkload::compute(const runtime::ItemTask& task) const {
 }
 
 std::vector<store::Block> SweepWorkload::blocks(WorkItemId id, const Bytes& result) const {
+  if (is_projection(id.stage)) return projection_blocks(id, result);
   const CellRef cell = schedule_.cell_of(id.stage, id.item);
   const auto& grid = schedule_.levels()[cell.level];
   const auto at = grid.indices(cell.cell);
@@ -119,7 +130,10 @@ std::vector<store::Block> SweepWorkload::blocks(WorkItemId id, const Bytes& resu
 }
 
 std::uint32_t SweepWorkload::kept_through(WorkItemId id) const {
-  return schedule_.last_reader(schedule_.cell_of(id.stage, id.item));
+  if (is_projection(id.stage)) return id.stage;
+  const CellRef cell = schedule_.cell_of(id.stage, id.item);
+  if (!settings_.projections.empty() && cell.level == final_level()) return schedule_.stage_count();
+  return schedule_.last_reader(cell);
 }
 
 }  // namespace pbrfit::jobs::sweep

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <set>
 
 #include "pbrfit/core/error.hpp"
 #include "pbrfit/jobs/job_kinds.hpp"
@@ -48,16 +49,33 @@ TEST_CASE("every bad job file is rejected with its exact one-line message") {
   }
 }
 
+// A shipped job may read the result of another shipped job (symbolic regression of a LUT): before that job
+// has run, the only acceptable refusal is that its result is not there yet.
+bool waits_for_shipped_result(const std::string& message, const std::set<std::string>& shipped_outputs) {
+  const std::string marker = "'result' names ";
+  const auto at = message.find(marker);
+  if (at == std::string::npos) return false;
+  const auto start = at + marker.size(), end = message.find(": cannot read file: No such file", start);
+  return end != std::string::npos && shipped_outputs.contains(message.substr(start, end - start));
+}
+
 TEST_CASE("every shipped job file is valid") {
   const std::filesystem::path dir = std::filesystem::path(PBRFIT_SOURCE_DIR);
+  std::set<std::string> outputs;
+  for (const auto& entry : std::filesystem::directory_iterator(dir / "jobs"))
+    if (entry.path().extension() == ".yaml") outputs.insert(spec::load_job_file(entry.path().string(), jobs::kind_catalogue()).output);
   std::size_t count = 0;
+  const auto previous = std::filesystem::current_path();
+  std::filesystem::current_path(dir);  // job files name their data relative to the project
   for (const auto* folder : {"jobs", "tests/jobs"}) {
     for (const auto& entry : std::filesystem::directory_iterator(dir / folder)) {
       if (entry.path().extension() != ".yaml") continue;
       INFO(entry.path().string());
-      CHECK(rejection(entry.path()) == "(accepted)");
+      const std::string message = rejection(entry.path());
+      CHECK((message == "(accepted)" || waits_for_shipped_result(message, outputs)));
       ++count;
     }
   }
+  std::filesystem::current_path(previous);
   CHECK(count >= 6);
 }

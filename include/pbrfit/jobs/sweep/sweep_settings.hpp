@@ -22,6 +22,7 @@ struct SweepSettings {
   std::vector<pbrfit::sweep::GridAxis> axes;
   std::size_t levels = 1;
   std::optional<pbrfit::sweep::Marching> marching;
+  std::vector<std::size_t> projections;  // axes the finest level's fits are averaged over (a last stage)
   pbrfit::sweep::CellFitOptions fit;
 };
 
