@@ -57,16 +57,8 @@ export_ symreg.h5 --member 0
 expect_status 0 "$(cat err.txt)"
 
 note "several outputs: one must be chosen"
-cat > tables.yaml <<'YAML'
-name: dfg-tables
-kind: symreg
-symreg:
-  dataset: {result: dfg.h5, tables: [dfg/scale, dfg/bias]}
-  population: 20
-  generations: 4
-  migration_interval: 2
-  islands: 2
-YAML
+job_from tests/jobs/small-symreg.yaml tables.yaml "s|^  dataset: .*|  dataset: {result: dfg.h5, tables: [dfg/scale, dfg/bias]}|" \
+  "s/generations: 100/generations: 10/"
 "$PBRFIT" run tables.yaml -q --output tables.h5
 export_ tables.h5
 expect_refusal 2 "tables.h5: error: the result has several outputs ('bias', 'scale'); choose one with --output"
