@@ -79,7 +79,7 @@ def _overview_row(data):
 @register("symreg")
 class SymregRenderer(Renderer):
     def kind_sections(self, report):
-        outputs = [read_output(g) for g in report.groups if is_output_group(g)]
+        outputs = [read_output(g, ("front",)) for g in report.groups if is_output_group(g)]
         rows = [_overview_row(data) for data in outputs]
         header = ["output", "inputs", "front members", "knee", "knee expression", "knee cost", "knee RMSE"]
         return [page.section([page.heading(2, "Symbolic regression", "symreg"),

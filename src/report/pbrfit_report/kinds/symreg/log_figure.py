@@ -19,12 +19,14 @@ def _per_island(ax, log, floor):
 
 
 def _envelope(ax, log, floor):
-    epochs = np.unique(log["epoch"])
-    generation = np.array([np.median(log["generation"][log["epoch"] == e]) for e in epochs])
-    errors = [on_log_axis(log["best_error"][log["epoch"] == e], floor) for e in epochs]
-    ax.fill_between(generation, [np.min(e) for e in errors], [np.max(e) for e in errors], alpha=0.3,
+    order = np.argsort(log["epoch"], kind="stable")
+    starts = np.unique(log["epoch"][order], return_index=True)[1]
+    generations = np.split(log["generation"][order].astype(np.float64), starts[1:])
+    errors = np.split(on_log_axis(log["best_error"][order], floor), starts[1:])
+    generation = [np.median(g) for g in generations]
+    ax.fill_between(generation, [np.nanmin(e) for e in errors], [np.nanmax(e) for e in errors], alpha=0.3,
                     label="best to worst island")
-    ax.plot(generation, [np.median(e) for e in errors], linewidth=1.5, label="median island")
+    ax.plot(generation, [np.nanmedian(e) for e in errors], linewidth=1.5, label="median island")
     ax.legend(fontsize=8)
 
 

@@ -1,5 +1,6 @@
 # The tables of one output group of a symreg result (docs/results-symreg.md), read whole: `front`,
-# `anchors`, `log` and `knee_prediction` as numpy record arrays (a table the file lacks reads as no rows),
+# `anchors`, `log` and `knee_prediction` as numpy record arrays (a table the file lacks, or one not asked
+# for, reads as no rows),
 # and the output's inputs in column order (group attribute `inputs`). Texts are decoded with texts().
 from dataclasses import dataclass
 
@@ -43,9 +44,10 @@ def is_output_group(group):
     return any(t.name == "front" and t.role == "front" for t in group.tables)
 
 
-def read_output(group):
+def read_output(group, tables=TABLES):
+    """The output's tables; those not named in `tables` are left empty (not read)."""
     def records(name):
-        node = group.node.get(name)
+        node = group.node.get(name) if name in tables else None
         return node[()] if node is not None and node.dtype.names else np.zeros(0, dtype=[("none", "f8")])
 
     inputs = [n.strip() for n in string_attribute(group.node, "inputs").split(",") if n.strip()]

@@ -4,7 +4,8 @@
 #    twice the rows, as for rows taken from a pbrfit table): a map over the grid (the first input along y),
 #    cells without a row grey; other rows: a scatter over the two inputs coloured by residual;
 #  - more inputs: the residuals over each input (at most MAX_PANELS), one panel each.
-# Residual colours are diverging and centred on 0.
+# Residual colours are diverging and centred on 0. Curves and scatters draw at most MAX_POINTS rows (evenly
+# strided, the title says so); a grid map draws every cell.
 import math
 
 import numpy as np
@@ -17,6 +18,7 @@ from ...map_drawing import add_colour_bar, draw_map
 
 MAX_PANELS = 8
 COLUMNS = 4
+MAX_POINTS = 100_000
 
 
 def residuals(data):
@@ -42,9 +44,13 @@ def grid_of(a, b, values):
     return ua, ub, grid
 
 
+def stride(count):
+    return max(1, math.ceil(count / MAX_POINTS))
+
+
 def _one_input(data, residual):
     x = data.knee_prediction[data.inputs[0]]
-    order = np.argsort(x, kind="stable")
+    order = np.argsort(x, kind="stable")[::stride(x.size)]
     figure = new_figure(7.0, 5.6)
     top, bottom = figure.subplots(2, 1, sharex=True, height_ratios=[2, 1])
     top.plot(x[order], data.knee_prediction["target"][order], linestyle="none", marker=".", label="target")
@@ -56,7 +62,7 @@ def _one_input(data, residual):
     bottom.set_ylabel("residual")
     bottom.set_xlabel(label(data.inputs[0]))
     bottom.grid(True, alpha=0.3)
-    return figure, top
+    return figure, top, stride(x.size)
 
 
 def _two_inputs(data, residual):
@@ -65,14 +71,16 @@ def _two_inputs(data, residual):
     figure = new_figure(7.0, 5.4)
     ax = figure.add_subplot()
     grid = grid_of(a, b, residual)
+    every = 1 if grid is not None else stride(residual.size)
     if grid is not None:
         artist = draw_map(ax, grid[2], grid[1], grid[0], scale)
     else:
-        artist = ax.scatter(b, a, c=residual, cmap=scale.cmap, norm=scale.norm, s=18, edgecolors="none")
+        artist = ax.scatter(b[::every], a[::every], c=residual[::every], cmap=scale.cmap, norm=scale.norm, s=18,
+                            edgecolors="none")
     add_colour_bar(figure, artist, ax, scale).set_label("residual")
     ax.set_xlabel(label(data.inputs[1]))
     ax.set_ylabel(label(data.inputs[0]))
-    return figure, ax
+    return figure, ax, every
 
 
 def _per_input(data, residual):
@@ -80,26 +88,29 @@ def _per_input(data, residual):
     columns = min(COLUMNS, len(shown))
     figure = new_figure(3.2 * columns + 0.8, 2.8 * math.ceil(len(shown) / columns) + 0.8)
     axes = figure.subplots(math.ceil(len(shown) / columns), columns, squeeze=False)
+    every = stride(residual.size)
     for slot, ax in enumerate(axes.flat):
         if slot >= len(shown):
             ax.set_visible(False)
             continue
         ax.axhline(0.0, color="#999999", linewidth=0.8)
-        ax.plot(data.knee_prediction[shown[slot]], residual, linestyle="none", marker=".", color="#d62728")
+        ax.plot(data.knee_prediction[shown[slot]][::every], residual[::every], linestyle="none", marker=".",
+                color="#d62728")
         ax.set_xlabel(label(shown[slot], 30), fontsize=8)
         ax.set_ylabel("residual", fontsize=8)
         ax.grid(True, alpha=0.3)
-    return figure, figure
+    return figure, figure, every
 
 
 def residual_figure(data):
     """Drawn only when knee_prediction has rows."""
     residual = residuals(data)
     count = len(data.inputs)
-    figure, titled = _one_input(data, residual) if count == 1 else \
+    figure, titled, every = _one_input(data, residual) if count == 1 else \
         _two_inputs(data, residual) if count == 2 else _per_input(data, residual)
     knee = data.knee()
-    left_out = f"the first {MAX_PANELS} of {count} inputs" if count > MAX_PANELS else ""
+    notes = [f"the first {MAX_PANELS} of {count} inputs"] if count > MAX_PANELS else []
+    notes += [f"1 row in {every} of {residual.size} drawn"] if every > 1 else []
     title(titled, f"{data.path}/knee_prediction: residuals of member {knee if knee is not None else '?'} (the knee)",
-          left_out)
+          "; ".join(notes))
     return figure
