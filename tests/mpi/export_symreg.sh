@@ -119,10 +119,11 @@ check_result() {
   check_members_shaders "$dir"
 }
 
-note "tests/jobs/small-symreg.yaml (no constants)"
+note "tests/jobs/small-symreg.yaml (no constants), on 2 ranks"
 mkdir plain
 job_from tests/jobs/small-symreg.yaml plain/job.yaml "s|^output: .*|output: $WORK/plain/result.h5|"
-"$PBRFIT" run plain/job.yaml -q
+run_ranks 2 run plain/job.yaml -q
+expect_status 0
 check_result "$WORK/plain"
 
 note "the same job with random and fitted constants"
