@@ -1,3 +1,5 @@
+// Chooses the output and member, checks the options, parses the member's expression back and exports
+// it after its comment line; the contract is in member_export.hpp.
 #include "pbrfit/jobs/symreg/member_export.hpp"
 
 #include <algorithm>

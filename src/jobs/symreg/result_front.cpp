@@ -1,3 +1,5 @@
+// Reads each field of <output>/front whole, through the store's record-field readers; the contract is
+// in result_front.hpp.
 #include "pbrfit/jobs/symreg/result_front.hpp"
 
 #include "pbrfit/core/error.hpp"

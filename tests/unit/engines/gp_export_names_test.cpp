@@ -1,3 +1,5 @@
+// Portable names (export_names.hpp): what every export language accepts, and the closest such name for
+// any text.
 #include <catch2/catch_test_macros.hpp>
 
 #include <string>

@@ -1,3 +1,5 @@
+// Record-field reading (record_fields.hpp) and group listing (result_file.hpp): fields come back whole and
+// in row order whatever the other fields, empty tables give empty fields, and every misuse is refused.
 #include <catch2/catch_test_macros.hpp>
 #include <catch2/matchers/catch_matchers_string.hpp>
 
