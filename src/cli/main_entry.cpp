@@ -45,6 +45,18 @@ int main_entry(int argc, char** argv) {
   report_cmd->add_option("-o,--out", report.out_dir, "directory for index.html and its figures (default: the result "
                          "path with .h5 replaced by .report)");
 
+  ExportOptions export_options;
+  auto* export_cmd = app.add_subcommand("export", "a member of a symbolic-regression front as an HLSL, GLSL or C++ "
+                                        "function, on stdout");
+  export_cmd->add_option("result", export_options.result_file, "result file (HDF5) of a symreg job")->required();
+  export_cmd->add_option("--output", export_options.output, "the output (group) whose front to read (default: the "
+                         "only one)");
+  export_cmd->add_option("--format", export_options.format, "hlsl (default), glsl or cpp")
+      ->check(CLI::IsMember({"hlsl", "glsl", "cpp"}));
+  export_cmd->add_option("--member", export_options.member, "row of the front, from 0 (default: the knee)");
+  export_cmd->add_option("--name", export_options.name, "the function's name (default: the output's name)");
+  export_cmd->add_flag("--double", export_options.cpp_double, "C++ only: double instead of float");
+
   SubmitOptions submit;
   auto* submit_cmd = app.add_subcommand("submit", "submit jobs to Slurm (requeueable, resumed after preemption)");
   submit_cmd->add_option("jobs", submit.job_files, "job files (YAML), one Slurm job each")->required();
@@ -71,6 +83,7 @@ int main_entry(int argc, char** argv) {
   if (*validate_cmd) return validate_command(validate_file);
   if (*submit_cmd) return submit_command(submit);
   if (*report_cmd) return report_command(report);
+  if (*export_cmd) return export_command(export_options);
   return status_command(status_file);
 }
 

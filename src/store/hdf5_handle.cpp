@@ -126,6 +126,17 @@ void write_f64_attribute(hid_t object, const std::string& name, double value) {
   write_scalar_attribute(object, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, value);
 }
 
+Handle open_dataset(hid_t file, const std::string& dataset) {
+  return Handle(check(H5Dopen2(file, dataset.c_str(), H5P_DEFAULT), "open " + dataset), H5Dclose);
+}
+
+std::vector<hsize_t> dimensions(hid_t dataset, const std::string& what) {
+  Handle space(check(H5Dget_space(dataset), "read extent of " + what), H5Sclose);
+  std::vector<hsize_t> dims(std::size_t(H5Sget_simple_extent_ndims(space)));
+  H5Sget_simple_extent_dims(space, dims.data(), nullptr);
+  return dims;
+}
+
 bool has_attribute(hid_t object, const std::string& name) { return H5Aexists(object, name.c_str()) > 0; }
 
 std::string read_string_attribute(hid_t object, const std::string& name) {

@@ -1,5 +1,6 @@
 #pragma once
-// RAII ownership of HDF5 identifiers and small typed helpers for attributes. Private to the store.
+// RAII ownership of HDF5 identifiers and small typed helpers for datasets and attributes. Private to the
+// store.
 #include <hdf5.h>
 
 #include <cstdint>
@@ -46,6 +47,10 @@ void write_string_attribute(hid_t object, const std::string& name, const std::st
 void write_u64_attribute(hid_t object, const std::string& name, std::uint64_t value);
 void write_i64_attribute(hid_t object, const std::string& name, std::int64_t value);
 void write_f64_attribute(hid_t object, const std::string& name, double value);
+
+// A dataset of an open file, and the extent of each of its dimensions (`what` names it in errors).
+Handle open_dataset(hid_t file, const std::string& dataset);
+std::vector<hsize_t> dimensions(hid_t dataset, const std::string& what);
 
 bool has_attribute(hid_t object, const std::string& name);
 std::string read_string_attribute(hid_t object, const std::string& name);

@@ -39,14 +39,7 @@ ResultSummary read_summary_attributes(hid_t file) {
 
 Handle open_dataset(const std::string& path, const std::string& dataset, Handle& file) {
   file = h5::open_file(path, false);
-  return Handle(check(H5Dopen2(file, dataset.c_str(), H5P_DEFAULT), "open " + dataset), H5Dclose);
-}
-
-std::vector<hsize_t> dimensions(hid_t data, const std::string& dataset) {
-  Handle space(check(H5Dget_space(data), "read extent of " + dataset), H5Sclose);
-  std::vector<hsize_t> dims(std::size_t(H5Sget_simple_extent_ndims(space)));
-  H5Sget_simple_extent_dims(space, dims.data(), nullptr);
-  return dims;
+  return h5::open_dataset(file, dataset);
 }
 
 hsize_t element_count(const std::vector<hsize_t>& dims) {
@@ -75,7 +68,7 @@ ResultSummary read_result_summary(const std::string& path) {
 std::vector<double> read_table(const std::string& path, const std::string& dataset, std::vector<std::uint64_t>* dims_out) {
   Handle file;
   Handle data = open_dataset(path, dataset, file);
-  const auto dims = dimensions(data, dataset);
+  const auto dims = h5::dimensions(data, dataset);
   std::vector<double> values(element_count(dims));
   if (!values.empty())
     check(H5Dread(data, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), "read " + dataset);
@@ -86,7 +79,7 @@ std::vector<double> read_table(const std::string& path, const std::string& datas
 std::vector<std::string> read_text_table(const std::string& path, const std::string& dataset) {
   Handle file;
   Handle data = open_dataset(path, dataset, file);
-  std::vector<char*> texts(element_count(dimensions(data, dataset)), nullptr);
+  std::vector<char*> texts(element_count(h5::dimensions(data, dataset)), nullptr);
   if (texts.empty()) return {};
   Handle type = h5::string_type();
   check(H5Dread(data, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, texts.data()), "read " + dataset);
@@ -103,6 +96,24 @@ std::string read_text_attribute(const std::string& path, const std::string& obje
   const std::string where = object.empty() ? "/" : object;
   Handle target(check(H5Oopen(file, where.c_str(), H5P_DEFAULT), "open " + where), H5Oclose);
   return h5::read_string_attribute(target, name);
+}
+
+std::vector<std::string> read_group_names(const std::string& path, const std::string& group) {
+  Handle file = h5::open_file(path, false);
+  const std::string where = group.empty() ? "/" : group;
+  Handle parent(check(H5Gopen2(file, where.c_str(), H5P_DEFAULT), "open group " + where), H5Gclose);
+  H5G_info_t info{};
+  check(H5Gget_info(parent, &info), "list group " + where);
+  std::vector<std::string> names;
+  for (hsize_t i = 0; i < info.nlinks; ++i) {
+    const auto length = check(H5Lget_name_by_idx(parent, ".", H5_INDEX_NAME, H5_ITER_INC, i, nullptr, 0, H5P_DEFAULT),
+                              "list group " + where);
+    std::string name(std::size_t(length), '\0');
+    H5Lget_name_by_idx(parent, ".", H5_INDEX_NAME, H5_ITER_INC, i, name.data(), name.size() + 1, H5P_DEFAULT);
+    Handle child(check(H5Oopen(parent, name.c_str(), H5P_DEFAULT), "open " + name), H5Oclose);
+    if (H5Iget_type(child) == H5I_GROUP) names.push_back(name);
+  }
+  return names;
 }
 
 }  // namespace pbrfit::store

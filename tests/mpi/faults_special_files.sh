@@ -5,13 +5,7 @@
 source "$(dirname "$0")/lib/common.bash"
 
 # Runs pbrfit (no mpirun) with a deadline; a hang is a failure, not a stuck test.
-run_bounded() {
-  set +e
-  timeout 20 "$PBRFIT" "$@" >out.txt 2>err.txt
-  STATUS=$?
-  set -e
-  [[ $STATUS -ne 124 ]] || fail "pbrfit $* hung"
-}
+run_bounded() { run_pbrfit "$@"; }
 
 # Exit 2 with exactly one line on stderr containing the expected text.
 expect_refusal() {

@@ -4,22 +4,7 @@
 # or a Python that cannot run it, is exit 3 with one "pbrfit: error:" line. Never a traceback.
 source "$(dirname "$0")/lib/common.bash"
 
-# Runs `pbrfit report ARGS` with a deadline (a FIFO must not hang it); STATUS, out.txt and err.txt.
-report() {
-  set +e
-  timeout 60 "$PBRFIT" report "$@" >out.txt 2>err.txt
-  STATUS=$?
-  set -e
-  [[ $STATUS -ne 124 ]] || fail "pbrfit report $* hung"
-}
-
-# The exit code and exactly one line on stderr, which is the expected one.
-expect_one_line() {
-  local code=$1 expected=$2
-  expect_status "$code" "$expected"
-  [[ $(wc -l <err.txt) -eq 1 ]] || { cat err.txt; fail "not exactly one line on stderr"; }
-  [[ "$(cat err.txt)" == "$expected" ]] || { cat err.txt; fail "expected: $expected"; }
-}
+report() { run_pbrfit report "$@"; }
 
 note "a missing file"
 report missing.h5

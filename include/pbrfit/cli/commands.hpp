@@ -1,5 +1,5 @@
 #pragma once
-// The pbrfit command line: run, validate, status, submit, report. Each returns the process exit code
+// The pbrfit command line: run, validate, status, submit, report, export. Each returns the process exit code
 // (core/error.hpp) and never lets an exception escape.
 #include <string>
 #include <vector>
@@ -32,11 +32,21 @@ struct ReportOptions {
   std::string out_dir;  // empty: the result path with .h5 replaced by .report
 };
 
+struct ExportOptions {
+  std::string result_file;
+  std::string output;                 // empty: the only output
+  std::string format = "hlsl";        // hlsl, glsl or cpp
+  std::string member;                 // row of the front, as written; empty: the knee
+  std::string name;                   // empty: the output's name
+  bool cpp_double = false;
+};
+
 int run_command(const RunOptions& options);
 int submit_command(const SubmitOptions& options);
 int validate_command(const std::string& job_file);
 int status_command(const std::string& result_file);
 int report_command(const ReportOptions& options);
+int export_command(const ExportOptions& options);
 
 int main_entry(int argc, char** argv);
 

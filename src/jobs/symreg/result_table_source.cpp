@@ -7,7 +7,6 @@
 #include "pbrfit/store/result_file.hpp"
 
 namespace pbrfit::jobs::symreg {
-namespace {
 
 std::vector<std::string> split_names(const std::string& text) {
   std::vector<std::string> names;
@@ -22,8 +21,6 @@ std::vector<std::string> split_names(const std::string& text) {
   }
   return names;
 }
-
-}  // namespace
 
 SymregOutput output_from_columns(const std::string& name, const std::vector<std::string>& inputs,
                                  const std::vector<std::vector<double>>& input_columns, const std::vector<double>& target) {

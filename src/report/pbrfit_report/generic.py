@@ -116,21 +116,29 @@ class Renderer:
         scale_groups = partners(group)
         out = []
         for table in (t for t in group.tables if t.kind == "grid"):
-            out.extend(_guarded(lambda: self.table_figures(report, group, table, scale_groups), table.path))
+            out.extend(guarded(lambda: self.table_figures(report, group, table, scale_groups), table.path))
         return out
 
-    def group_section(self, report, group, anchor):
-        grids = [t for t in group.tables if t.kind == "grid"]
+    def group_header(self, group, anchor):
+        """The group's heading (with its anchor), description and attributes."""
         parts = [page.heading(2, group.path, anchor), page.paragraph(group.description) if group.description else ""]
         attributes = _group_attribute_rows(group)
         if attributes:
             parts.append(page.table(["attribute", "value"], attributes))
+        return parts
+
+    def rows_section(self, table):
+        """A record, text or growing table as its first rows."""
+        parts = [page.heading(3, table.path), page.paragraph(table.description) if table.description else ""]
+        return parts + guarded(lambda: [rows_markup(table)], table.path)
+
+    def group_section(self, report, group, anchor):
+        grids = [t for t in group.tables if t.kind == "grid"]
+        parts = self.group_header(group, anchor)
         parts += [_axes_markup(group), _summary_markup(grids), _comparison_markup(group)]
         parts += self.group_figures(report, group)
         for table in (t for t in group.tables if t.kind == "rows"):
-            parts.append(page.heading(3, table.path))
-            parts.append(page.paragraph(table.description) if table.description else "")
-            parts.extend(_guarded(lambda: [rows_markup(table)], table.path))
+            parts += self.rows_section(table)
         for table in group.tables:
             table.forget_values()  # a group's numbers are not kept while the next one is drawn
         return page.section(parts)
@@ -148,7 +156,8 @@ class Renderer:
             [contents, run_summary_markup(report.file, report.result_path)] + sections
 
 
-def _guarded(make_markup, path):
+def guarded(make_markup, path):
+    """make_markup(), or a note saying why it failed: one odd table does not cost the whole report."""
     try:
         return make_markup()
     except RunProblem:

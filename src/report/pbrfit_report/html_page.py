@@ -15,6 +15,7 @@ figure { display: inline-block; margin: 0.5em 1em 1em 0; vertical-align: top; }
 figcaption { font-size: 85%; max-width: 40em; }
 .note { color: #7a4b00; }
 section { border-top: 2px solid #ddd; margin-top: 2em; }
+.beside { display: flex; flex-wrap: wrap; gap: 0 2em; align-items: flex-start; }
 """
 
 
@@ -60,6 +61,11 @@ def table(header, rows, numeric_columns=()):
             cells.append(f"<td{cls}>{escape(cell)}</td>")
         body.append("<tr>" + "".join(cells) + "</tr>")
     return f"<table><thead><tr>{head}</tr></thead><tbody>{''.join(body)}</tbody></table>"
+
+
+def beside(markup_parts):
+    """Blocks side by side where the page is wide enough, one below the other where it is not."""
+    return '<div class="beside">' + "".join(f"<div>{part}</div>" for part in markup_parts) + "</div>"
 
 
 def section(markup_parts):

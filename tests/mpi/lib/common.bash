@@ -91,6 +91,23 @@ wait_for_state() {
   fail "status never showed state '$pattern'"
 }
 
+# Runs `pbrfit ARGS` with a deadline (a FIFO must not hang it); STATUS, out.txt and err.txt.
+run_pbrfit() {
+  set +e
+  timeout 60 "$PBRFIT" "$@" >out.txt 2>err.txt
+  STATUS=$?
+  set -e
+  [[ $STATUS -ne 124 ]] || fail "pbrfit $* hung"
+}
+
+# The exit code and exactly one line on stderr, which is the expected one.
+expect_one_line() {
+  local code=$1 expected=$2
+  expect_status "$code" "$expected"
+  [[ $(wc -l <err.txt) -eq 1 ]] || { cat err.txt; fail "not exactly one line on stderr"; }
+  [[ "$(cat err.txt)" == "$expected" ]] || { cat err.txt; fail "expected: $expected"; }
+}
+
 expect_status() {
   [[ "$STATUS" -eq "$1" ]] || fail "expected exit code $1, got $STATUS${2:+ ($2)}"
 }

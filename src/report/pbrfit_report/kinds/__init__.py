@@ -18,3 +18,4 @@ def renderer_for(kind):
 
 
 from . import lut  # noqa: E402,F401 - registers itself
+from . import symreg  # noqa: E402,F401 - registers itself

@@ -1,0 +1,35 @@
+// Reads each field of <output>/front whole, through the store's record-field readers; the contract is
+// in result_front.hpp.
+#include "pbrfit/jobs/symreg/result_front.hpp"
+
+#include "pbrfit/core/error.hpp"
+#include "pbrfit/core/quoted_text.hpp"
+#include "pbrfit/jobs/symreg/result_table_source.hpp"
+#include "pbrfit/store/record_fields.hpp"
+#include "pbrfit/store/result_file.hpp"
+
+namespace pbrfit::jobs::symreg {
+
+std::vector<std::string> result_outputs(const std::string& path) {
+  auto names = store::read_group_names(path, "");
+  std::erase(names, std::string("subexpressions"));
+  return names;
+}
+
+OutputFront read_output_front(const std::string& path, const std::string& output) {
+  OutputFront front{output, split_names(store::read_text_attribute(path, output, "inputs")), {}};
+  const std::string table = output + "/front";
+  const auto expressions = store::read_text_field(path, table, "expression");
+  const auto costs = store::read_number_field(path, table, "cost");
+  const auto rmse = store::read_number_field(path, table, "rmse");
+  const auto max_abs = store::read_number_field(path, table, "max_abs_error");
+  const auto knee = store::read_number_field(path, table, "knee");
+  const std::size_t rows = expressions.size();
+  if (costs.size() != rows || rmse.size() != rows || max_abs.size() != rows || knee.size() != rows)
+    throw RunError("the front of " + quote(output) + " changed while it was read (the job is writing it); try again");
+  for (std::size_t k = 0; k < rows; ++k)
+    front.members.push_back({expressions[k], costs[k], rmse[k], max_abs[k], knee[k] == 1.0});
+  return front;
+}
+
+}  // namespace pbrfit::jobs::symreg

@@ -1,0 +1,85 @@
+#!/usr/bin/env bash
+# `pbrfit report` of symreg results: Nguyen-5 (tests/jobs/small-symreg.yaml, seed 2: its front has a
+# recurring sub-expression) with an anchor whose name holds HTML special characters, and a regression of
+# two tables of a pbrfit result (two inputs on a grid, two outputs). Every image is a valid PNG (a front,
+# a residual and a log figure per output), the front table lists every member's whole expression, the
+# anchor appears beside our best member at equal or lower cost (checked against the file), the recurring
+# sub-expressions are listed, every text is escaped; a job still running shows no front yet, and its log.
+source "$(dirname "$0")/lib/common.bash"
+source "$PBRFIT_SOURCE_DIR/tests/mpi/lib/report_checks.bash"
+
+# Runs `pbrfit report RESULT --out DIR` and expects success, silently.
+report_ok() {
+  set +e
+  "$PBRFIT" report "$1" --out "$2" >out.txt 2>err.txt; STATUS=$?
+  set -e
+  expect_status 0 "$(cat err.txt)"
+  [[ ! -s err.txt ]] || { cat err.txt; fail "report wrote to stderr"; }
+}
+
+# Exit 0 when every text the Python snippet prints (a line each) is in the page, escaped, as a whole cell.
+cells_in_page() {
+  local page=$1 snippet=$2
+  "$H5PY_PYTHON" - "$page" <<PY
+import html, sys, h5py
+page = open(sys.argv[1]).read()
+texts = []
+$snippet
+missing = [t for t in texts if "<td>" + html.escape(t) + "</td>" not in page]
+print("\n".join("missing: " + t for t in missing))
+sys.exit(1 if missing or not texts else 0)
+PY
+}
+
+note "Nguyen-5 with an anchor"
+job_from tests/jobs/small-symreg.yaml job.yaml "s/^seed: 3/seed: 2/"
+echo '  anchors: [{name: "exact <&> \"formula\"", expression: "sin(x*x) * cos(x) - 1"}]' >>job.yaml
+"$PBRFIT" run job.yaml -q
+report_ok result.h5 page
+html=page/index.html
+expect_tables_mentioned result.h5 page
+expect_valid_images page 3
+[[ $IMAGES -eq 3 ]] || fail "$IMAGES images, expected 3 (front, residuals, log)"
+cells_in_page "$html" 'texts = [e.decode() for e in h5py.File("result.h5", "r")["y/front"]["expression"]]' ||
+  fail "the front table does not list every member's expression"
+cells_in_page "$html" 'texts = [s.decode() for s in h5py.File("result.h5", "r")["subexpressions/recurring"]["subexpression"]]' ||
+  fail "the recurring sub-expressions are not listed"
+grep -qF "<td>exact &lt;&amp;&gt; &quot;formula&quot;</td><td>sin(x*x) * cos(x) - 1</td>" "$html" ||
+  fail "the anchor is not in the anchors table, escaped"
+! grep -qF "exact <&>" "$html" || fail "the anchor's name is not escaped"
+best=$("$H5PY_PYTHON" - <<'PY'
+import h5py, numpy as np
+with h5py.File("result.h5", "r") as f:
+    front, anchor = f["y/front"][()], f["y/anchors"][0]
+cheap = np.flatnonzero(front["cost"] <= anchor["cost"])
+print(f"member {cheap[np.argmin(front['rmse'][cheap])]}")
+PY
+)
+grep -qF "<td>$best</td>" "$html" || fail "the anchor is not compared with $best"
+knee=$("$H5PY_PYTHON" -c 'import h5py, numpy; print(int(numpy.flatnonzero(h5py.File("result.h5", "r")["y/front"]["knee"] == 1)[0]))')
+grep -q "the knee (the default of pbrfit export) is member $knee: " "$html" || fail "the knee is not named"
+note "$IMAGES images; knee member $knee; the anchor compared with $best"
+
+note "two tables of a pbrfit result: two inputs on a grid, two outputs"
+cp "$PBRFIT_SOURCE_DIR/tests/jobs/small-dfg.yaml" dfg.yaml
+"$PBRFIT" run dfg.yaml -q --output dfg.h5
+job_from tests/jobs/small-symreg.yaml tables.yaml "s|^  dataset: .*|  dataset: {result: dfg.h5, tables: [dfg/scale, dfg/bias]}|" \
+  "s/generations: 100/generations: 10/"
+"$PBRFIT" run tables.yaml -q --output tables.h5
+report_ok tables.h5 tables
+expect_tables_mentioned tables.h5 tables
+expect_valid_images tables 6
+[[ $IMAGES -eq 6 ]] || fail "$IMAGES images, expected 6 (3 per output)"
+
+note "a job still running: no front yet, the log so far"
+job_from tests/jobs/small-symreg.yaml long.yaml "s/generations: 100/generations: 10000000/" "s/^output: .*/output: long.h5/"
+start_ranks 1 run long.yaml -q
+wait_for_items long.h5 8
+report_ok long.h5 live
+expect_valid_images live 1
+grep -q "No front yet: the job has not finished its last stage" live/index.html || fail "the running job's page claims a front"
+background_running || fail "the job finished before the report was made; make the test job longer"
+kill -TERM $(rank_pids)
+wait_background
+expect_status 75
+echo "PASS"
