@@ -101,8 +101,12 @@ void RunState::advance() {
   kept_.merge(kept_now_);
   kept_now_.clear();
   done_before_ += done_.size();
-  start_stage(stage_ + 1);
-  std::erase_if(kept_, [&](const auto& entry) { return workload_.kept_through(entry.first) < stage_; });
+  const std::uint32_t completed = stage_, next = workload_.next_stage(completed, kept_);
+  if (next <= completed || next > workload_.stage_count())
+    throw std::logic_error("next_stage(" + std::to_string(completed) + ") gave " + std::to_string(next));
+  for (std::uint32_t skipped = completed + 1; skipped < next; ++skipped) done_before_ += workload_.item_count(skipped);
+  start_stage(next);
+  std::erase_if(kept_, [&](const auto& entry) { return workload_.kept_through(entry.first) <= completed; });
   new_items_.clear();
   needs_snapshot_ = true;
 }

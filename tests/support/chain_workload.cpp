@@ -76,7 +76,7 @@ Bytes ChainWorkload::stage_context(std::uint32_t stage, const ItemResults& kept)
     report(stage);
   std::uint64_t count = 0, sum = 0;
   for (const auto& [id, result] : kept) {
-    if (id.stage + 1 != stage) continue;
+    if (stage == 0 || id.stage != previous(stage)) continue;
     ++count;
     sum += decode(result).value;
   }
@@ -90,8 +90,8 @@ Bytes ChainWorkload::item_input(std::uint32_t stage, std::uint64_t item, const I
   ByteWriter out;
   if (stage == 0) return out.take();
   const auto neighbour = (item + settings_.items - 1) % settings_.items;
-  out.put(decode(kept.at({stage - 1, item})).value);
-  out.put(decode(kept.at({stage - 1, neighbour})).value);
+  out.put(decode(kept.at({previous(stage), item})).value);
+  out.put(decode(kept.at({previous(stage), neighbour})).value);
   return out.take();
 }
 

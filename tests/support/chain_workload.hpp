@@ -27,6 +27,9 @@ struct ChainSettings {
   std::uint64_t signal_after = 0;
   std::uint32_t fail_stage = std::numeric_limits<std::uint32_t>::max();
   std::uint64_t fail_item = 0;
+  // Stage skipping: after stage skip_after the next stage run is skip_to (Workload::next_stage).
+  std::uint32_t skip_after = std::numeric_limits<std::uint32_t>::max();
+  std::uint32_t skip_to = 0;
   // Benchmarks: when these stages start, rank 0 prints its peak memory and the sizes of the checkpoint
   // and block journal of `output`.
   std::vector<std::uint32_t> report_stages = {};
@@ -44,6 +47,9 @@ class ChainWorkload final : public runtime::Workload {
   Bytes item_input(std::uint32_t stage, std::uint64_t item, const ItemResults& kept) const override;
   Bytes compute(const runtime::ItemTask& task) const override;
   std::vector<store::Block> blocks(WorkItemId id, const Bytes& result) const override;
+  std::uint32_t next_stage(std::uint32_t completed, const ItemResults&) const override {
+    return completed == settings_.skip_after ? settings_.skip_to : completed + 1;
+  }
   // The next stage reads every result of this one; the last stage's results no stage reads.
   std::uint32_t kept_through(WorkItemId id) const override {
     return id.stage + 1 < settings_.stages ? id.stage + 1 : id.stage;
@@ -60,6 +66,10 @@ class ChainWorkload final : public runtime::Workload {
     std::uint64_t results_in_signal_stage = 0;
   };
   static Result decode(const Bytes& bytes);
+  // The stage run before `stage` (stage - 1 unless a skip landed on it).
+  std::uint32_t previous(std::uint32_t stage) const {
+    return stage == settings_.skip_to && settings_.skip_after < stage ? settings_.skip_after : stage - 1;
+  }
   void maybe_raise(std::uint32_t stage, std::uint64_t collected) const;
   void report(std::uint32_t stage) const;
 

@@ -63,6 +63,12 @@ class Workload {
   virtual Bytes compute(const ItemTask& task) const = 0;
   virtual std::vector<store::Block> blocks(WorkItemId id, const Bytes& result) const = 0;
 
+  // The stage to run after `completed`, from the results kept so far (a search that has reached its target
+  // goes straight to its last stage). Must be > completed and <= stage_count(), and a pure function of its
+  // arguments. The items of the stages skipped count as done and produce nothing; results the stage after
+  // `completed` would have kept stay kept into the stage run instead. Default: the next stage.
+  virtual std::uint32_t next_stage(std::uint32_t completed, const ItemResults& /*kept*/) const { return completed + 1; }
+
   // The last stage whose context or inputs read this result. Until that stage is complete the result is
   // kept in rank 0's memory and in the checkpoint; after it, only its blocks remain (in the result file
   // and the block journal). Default: no later stage reads it.

@@ -1,5 +1,6 @@
 #include <catch2/catch_test_macros.hpp>
 
+#include <cmath>
 #include <csignal>
 #include <filesystem>
 #include <set>
@@ -26,6 +27,14 @@ ChainRun uneven(int threads) {
 }
 
 std::vector<double> table(const std::string& path, const std::string& name) { return store::read_table(path, name); }
+
+// Equal values in equal places, unwritten (NaN) entries included.
+bool same_numbers(const std::vector<double>& a, const std::vector<double>& b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    if (!(a[i] == b[i] || (std::isnan(a[i]) && std::isnan(b[i])))) return false;
+  return true;
+}
 
 }  // namespace
 
@@ -70,6 +79,37 @@ TEST_CASE("a stop at every stage boundary and in the middle of every stage resum
         CHECK(table(path, "chain/value") == table(reference, "chain/value"));
         CHECK(table(path, "chain/random") == table(reference, "chain/random"));
       }
+    }
+  }
+}
+
+TEST_CASE("a workload may skip stages: their items count as done, and a stop across the skip resumes the same") {
+  auto skipping = uneven(2);
+  skipping.chain.stages = 5;
+  skipping.chain.skip_after = 1;
+  skipping.chain.skip_to = 4;  // stages 2 and 3 never run
+  const auto reference = scratch_path("skip-reference.h5");
+  REQUIRE(run_chain(skipping, reference) == exit_success);
+  const auto summary = store::read_result_summary(reference);
+  CHECK(summary.items_done == summary.items_total);
+  const auto values = table(reference, "chain/value");  // [stage][item]: skipped stages stay unwritten
+  for (std::size_t item = 0; item < 12; ++item) {
+    CHECK(std::isnan(values[2 * 12 + item]));
+    CHECK(std::isnan(values[3 * 12 + item]));
+    CHECK_FALSE(std::isnan(values[4 * 12 + item]));
+  }
+  for (std::uint64_t after : {std::uint64_t{0}, std::uint64_t{5}}) {
+    DYNAMIC_SECTION("stopped in stage 4 after " << after << " results") {
+      const auto path = scratch_path("skip-stopped.h5");
+      auto stopped = skipping;
+      stopped.chain.signal = SIGTERM;
+      stopped.chain.signal_stage = 4;
+      stopped.chain.signal_after = after;
+      REQUIRE(run_chain(stopped, path) == exit_interrupted);
+      auto resumed = skipping;
+      resumed.resume = true;
+      REQUIRE(run_chain(resumed, path) == exit_success);
+      CHECK(same_numbers(table(path, "chain/value"), table(reference, "chain/value")));
     }
   }
 }
