@@ -3,7 +3,8 @@
 #  1. exact recovery of Nguyen-1..8 with Koza's operators and no constants (jobs/nguyen7.yaml's settings),
 #     SEEDS seeds each on 2 ranks: recovered = a front member with RMSE < 1e-9 on 10,000 fresh points,
 #     within LIMIT seconds of wall time (the run stops itself once an island's training error is ~0);
-#  2. evaluations per second on 1 and 2 ranks for the same search with a fixed number of generations;
+#  2. evaluations per second on 1 and 2 ranks: the Nguyen-7 search (20 rows, short epochs) and the DFG case
+#     study's search (16,384 rows) for a fixed number of generations;
 #  3. the DFG case studies, when their results exist (results/dfg-symreg*.h5): per output, the most accurate
 #     front member whose cost is at most the anchor's, beside the anchor.
 # Usage: tests/benchmarks/symreg_benchmark.sh [path/to/pbrfit]   (SEEDS=10, LIMIT=60, PROBLEMS="1 2 ... 8")
@@ -55,23 +56,34 @@ PY
   echo "| Nguyen-$p | $recovered/$SEEDS | $median | $(sort -g times | tail -1) | \`$example\` |"
 done
 
-echo
-echo "## Evaluations per second, Nguyen-7 search without a target (300 generations)"
-nguyen_job 7 1 300 0
-for ranks in 1 2; do
-  rm -f run.h5*
-  mpirun "${FLAGS[@]}" -np "$ranks" "$PBRFIT" run job.yaml --threads 1 -q --output "r$ranks.h5" > /dev/null
-done
-/usr/bin/python3 - <<'PY'
+# Prints the 1- and 2-rank evaluation rates of job.yaml (all outputs' log tables).
+rates() {
+  for ranks in 1 2; do
+    rm -f "r$ranks.h5"*
+    mpirun "${FLAGS[@]}" -np "$ranks" "$PBRFIT" run job.yaml --threads 1 -q --output "r$ranks.h5" > /dev/null
+  done
+  /usr/bin/python3 - <<'PY'
 import h5py
 rates = []
 for ranks in (1, 2):
     f = h5py.File(f"r{ranks}.h5", "r")
-    evaluations = int(f["y/log"][...]["evaluations"].sum())
+    evaluations = sum(int(f[g]["log"][...]["evaluations"].sum()) for g in f if g != "subexpressions")
     rates.append(evaluations / f.attrs["elapsed_seconds"])
     print(f"| {ranks} rank{'s' if ranks > 1 else ''} | {evaluations} evaluations | {f.attrs['elapsed_seconds']:.2f} s | {rates[-1]:.4g}/s |")
 print(f"2 ranks / 1 rank: {rates[1] / rates[0]:.2f}x")
 PY
+}
+
+echo
+echo "## Evaluations per second, Nguyen-7 search without a target (300 generations, 20 rows)"
+nguyen_job 7 1 300 0
+rates
+echo
+echo "## Evaluations per second, the DFG case study's search for 30 generations (2 outputs, 16384 rows each)"
+sed -e "s|^output: .*|output: lut.h5|" "$ROOT/jobs/dfg-narkowicz.yaml" > lut.yaml
+mpirun "${FLAGS[@]}" -np 2 "$PBRFIT" run lut.yaml -q > /dev/null
+sed -e "s|result: results/dfg-narkowicz.h5|result: lut.h5|" -e "s/generations: 400/generations: 30/" "$ROOT/jobs/dfg-symreg.yaml" > job.yaml
+rates
 
 for result in "$ROOT"/results/dfg-symreg.h5 "$ROOT"/results/dfg-symreg-course.h5; do
   [[ -f $result ]] || continue

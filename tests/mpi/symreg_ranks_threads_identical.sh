@@ -34,6 +34,18 @@ assert len(f["y/archive"]) >= len(front)
 assert len(f["y/knee_prediction"]) == 20
 PY
 
+note "jobs/nguyen7.yaml: recovered exactly, then the remaining epochs are skipped"
+sed 's|^output: .*|output: result.h5|' "$PBRFIT_SOURCE_DIR/jobs/nguyen7.yaml" > nguyen7.yaml
+GROUPS_TO_COMPARE=(/y)
+compare_layouts nguyen7.yaml
+"$PBRFIT" status nguyen7-2x2.h5 | grep -q "^progress: *1201 of 1201 work items" || fail "skipped epochs are not counted as done"
+"$H5PY_PYTHON" - <<'PY' || fail "Nguyen-7 was not recovered, or the search did not stop early"
+import h5py
+f = h5py.File("nguyen7-ref.h5", "r")
+assert any(m["test_rmse"] < 1e-9 for m in f["y/front"][...]), "no exact member"
+assert f["y/log"][...]["generation"].max() < 3000, "the search ran to its last generation"
+PY
+
 note "a table of a pbrfit result as data: two outputs of a DFG table, each reading the other"
 cat > lut.yaml <<'YAML'
 name: lut

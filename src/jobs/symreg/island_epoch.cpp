@@ -34,9 +34,15 @@ auto decoded(std::span<const std::byte> bytes, const char* what, Read&& read) {
 
 }  // namespace
 
+// An epoch: [u8 reached_target][varint generation][bytes emigrants][bytes state][bytes additions]
+// [varint evaluations][f64 best]; the state is [bytes population][bytes front][u8 reached_target].
 Bytes encode_epoch(const IslandEpoch& epoch) {
-  ByteWriter out;
-  write_state(out, epoch.state);
+  ByteWriter out, state;
+  out.put(std::uint8_t(epoch.state.reached_target));
+  out.put_varint(epoch.state.population.generation);
+  out.put_bytes(gp::individuals_to_bytes(epoch.emigrants));
+  write_state(state, epoch.state);
+  out.put_bytes(state.bytes());
   out.put_bytes(gp::archive_to_bytes(epoch.additions));
   out.put_varint(epoch.evaluations);
   out.put(epoch.best_error);
@@ -46,12 +52,62 @@ Bytes encode_epoch(const IslandEpoch& epoch) {
 IslandEpoch decode_epoch(std::span<const std::byte> bytes, std::size_t inputs) {
   return decoded(bytes, "island epoch", [&](ByteReader& in) {
     IslandEpoch epoch;
-    epoch.state = read_state(in, inputs);
+    const bool reached = in.get<std::uint8_t>() != 0;
+    const std::uint64_t generation = in.get_varint();
+    epoch.emigrants = gp::individuals_from_bytes(in.get_bytes(), inputs);
+    const Bytes state = in.get_bytes();
+    ByteReader state_in(state);
+    epoch.state = read_state(state_in, inputs);
+    if (state_in.remaining() != 0 || reached != epoch.state.reached_target || generation != epoch.state.population.generation)
+      throw ByteFormatError(in.offset(), "inconsistent island state");
     epoch.additions = gp::archive_from_bytes(in.get_bytes(), inputs);
     epoch.evaluations = in.get_varint();
     epoch.best_error = in.get<double>();
     return epoch;
   });
+}
+
+EpochRecord decode_record(std::span<const std::byte> bytes, std::size_t inputs) {
+  return decoded(bytes, "island epoch", [&](ByteReader& in) {
+    EpochRecord record;
+    in.get<std::uint8_t>();
+    record.generation = in.get_varint();
+    in.get_bytes();  // emigrants
+    const Bytes state = in.get_bytes();
+    ByteReader state_in(state);
+    state_in.get_bytes();  // the population, left undecoded
+    record.front = gp::archive_from_bytes(state_in.get_bytes(), inputs);
+    record.additions = gp::archive_from_bytes(in.get_bytes(), inputs);
+    record.evaluations = in.get_varint();
+    record.best_error = in.get<double>();
+    return record;
+  });
+}
+
+EpochBytes split_epoch(std::span<const std::byte> bytes) {
+  return decoded(bytes, "island epoch", [&](ByteReader& in) {
+    EpochBytes parts;
+    parts.reached_target = in.get<std::uint8_t>() != 0;
+    in.get_varint();  // generation
+    parts.emigrants = in.get_bytes();
+    parts.state = in.get_bytes();
+    in.get_bytes();  // additions
+    in.get_varint();
+    in.get<double>();
+    return parts;
+  });
+}
+
+Bytes next_input(const EpochBytes& own, const EpochBytes& neighbour, bool solved) {
+  ByteWriter out;
+  out.put(std::uint8_t(1));
+  Bytes input = out.take();
+  input.insert(input.end(), own.state.begin(), own.state.end());  // as write_state wrote it
+  ByteWriter rest;
+  rest.put_bytes(neighbour.emigrants);
+  rest.put(std::uint8_t(solved));
+  input.insert(input.end(), rest.bytes().begin(), rest.bytes().end());
+  return input;
 }
 
 Bytes encode_input(const EpochInput& input) {

@@ -107,8 +107,8 @@ Bytes SymregWorkload::final_fronts(const runtime::ItemTask& task) const {
   std::vector<gp::ParetoArchive> merged;
   for (std::size_t o = 0; o < data.outputs.size(); ++o) merged.emplace_back(options(o).objective_count());
   ByteReader in(task.input);
-  for (std::uint64_t i = 0; i < item_count(task.id.stage - 1); ++i)
-    merged[output_of(i)].insert_all(decode_epoch(in.get_bytes(), input_count(output_of(i))).state.front);
+  for (std::uint64_t i = 0; i < item_count(0); ++i)
+    merged[output_of(i)].insert_all(decode_record(in.get_bytes(), input_count(output_of(i))).front);
   std::vector<std::vector<gp::ArchiveEntry>> fronts;
   std::vector<store::Block> blocks;
   for (std::size_t o = 0; o < data.outputs.size(); ++o) {

@@ -115,13 +115,13 @@ store::ResultLayout SymregWorkload::layout() const {
   return layout;
 }
 
-std::vector<store::Block> SymregWorkload::epoch_blocks(WorkItemId id, const IslandEpoch& epoch) const {
+std::vector<store::Block> SymregWorkload::epoch_blocks(WorkItemId id, const EpochRecord& epoch) const {
   const std::size_t o = output_of(id.item);
   const SymregOutput& output = settings_.data->outputs[o];
   const std::uint64_t island = id.item - o * settings_.islands;
   store::Block log{output.name, "log", {0}, {1},
-                   {double(id.stage), double(island), double(epoch.state.population.generation), double(epoch.evaluations),
-                    epoch.best_error, double(epoch.state.front.size())}};
+                   {double(id.stage), double(island), double(epoch.generation), double(epoch.evaluations),
+                    epoch.best_error, double(epoch.front.size())}};
   std::vector<store::Block> out = {log};
   if (epoch.additions.empty()) return out;
   store::Block archive{output.name, "archive", {0}, {epoch.additions.size()}};
@@ -135,7 +135,7 @@ std::vector<store::Block> SymregWorkload::epoch_blocks(WorkItemId id, const Isla
 }
 
 std::vector<store::Block> SymregWorkload::blocks(WorkItemId id, const Bytes& result) const {
-  if (!is_final(id.stage)) return epoch_blocks(id, decode_epoch(result, input_count(output_of(id.item))));
+  if (!is_final(id.stage)) return epoch_blocks(id, decode_record(result, input_count(output_of(id.item))));
   try {
     ByteReader in(result);
     const std::uint64_t count = in.get_varint();

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
+#include <vector>
 
 #include "pbrfit/jobs/symreg/symreg_workload.hpp"
 
@@ -28,11 +30,11 @@ void SymregWorkload::fold_summary(Bytes& summary, WorkItemId id, const Bytes& re
   if (is_final(id.stage)) return;
   auto sum = runtime::summary_as<Summary>(summary);
   const std::size_t o = output_of(id.item);
-  const IslandEpoch epoch = decode_epoch(result, input_count(o));
+  const EpochRecord epoch = decode_record(result, input_count(o));
   sum.evaluations += epoch.evaluations;
-  sum.generation = std::max(sum.generation, epoch.state.population.generation);
+  sum.generation = std::max(sum.generation, epoch.generation);
   if (o < summary_outputs) {
-    for (const auto& entry : epoch.state.front) {
+    for (const auto& entry : epoch.front) {
       const std::size_t b = bucket_of(entry.fitness.cost);
       const bool has = (sum.seen[o] >> b) & 1u;
       if (!has || entry.fitness.error < sum.best[o][b]) sum.best[o][b] = entry.fitness.error;
@@ -51,15 +53,15 @@ std::string SymregWorkload::headline(const Bytes& summary) const {
   std::string line = text;
   for (std::size_t o = 0; o < settings_.data->outputs.size() && o < summary_outputs; ++o) {
     line += "; " + settings_.data->outputs[o].name + " best error by cost";
+    std::vector<std::string> front;  // the costs where the error improves; the last 8 are shown
     double previous = HUGE_VAL;
-    int shown = 0;
-    for (std::size_t b = 0; b < cost_buckets && shown < 8; ++b) {
+    for (std::size_t b = 0; b < cost_buckets; ++b) {
       if (!((sum.seen[o] >> b) & 1u) || !(sum.best[o][b] < previous)) continue;
       previous = sum.best[o][b];
       std::snprintf(text, sizeof text, " %zu: %.3g", b, previous);
-      line += text;
-      ++shown;
+      front.push_back(text);
     }
+    for (std::size_t k = front.size() > 8 ? front.size() - 8 : 0; k < front.size(); ++k) line += front[k];
   }
   return line;
 }

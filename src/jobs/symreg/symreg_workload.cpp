@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "pbrfit/gp/evolve.hpp"
+#include "pbrfit/gp/program_bytes.hpp"
 
 namespace pbrfit::jobs::symreg {
 namespace {
@@ -34,25 +35,23 @@ std::uint64_t SymregWorkload::item_count(std::uint32_t stage) const {
 }
 
 Bytes SymregWorkload::item_input(std::uint32_t stage, std::uint64_t item, const ItemResults& kept) const {
-  if (is_final(stage)) {
+  if (is_final(stage)) {  // the last epoch run (later ones are skipped once every output is solved)
+    if (kept.empty()) throw std::logic_error("symreg: no island epochs were kept for the fronts");
+    const std::uint32_t last = kept.rbegin()->first.stage;
     ByteWriter out;
-    for (std::uint64_t i = 0; i < item_count(stage - 1); ++i) out.put_bytes(kept_result(kept, {stage - 1, i}));
+    for (std::uint64_t i = 0; i < item_count(last); ++i) out.put_bytes(kept_result(kept, {last, i}));
     return out.take();
   }
-  EpochInput input;
-  if (stage > 0) {
-    const std::size_t output = output_of(item), islands = settings_.islands;
-    const std::uint64_t first = output * islands, island = item - first;
-    IslandEpoch own = decode_epoch(kept_result(kept, {stage - 1, item}), input_count(output));
-    const std::uint64_t before = first + (island + islands - 1) % islands;  // the ring's previous island
-    const IslandEpoch neighbour = decode_epoch(kept_result(kept, {stage - 1, before}), input_count(output));
-    input.has_state = true;
-    input.state = std::move(own.state);
-    if (islands > 1) input.migrants = gp::pick_emigrants(neighbour.state.population, settings_.migrants, options(output));
-    for (std::uint64_t i = first; i < first + islands; ++i)
-      input.solved = input.solved || decode_epoch(kept_result(kept, {stage - 1, i}), input_count(output)).state.reached_target;
-  }
-  return encode_input(input);
+  if (stage == 0) return encode_input(EpochInput{});
+  const std::size_t output = output_of(item), islands = settings_.islands;
+  const std::uint64_t first = output * islands, island = item - first;
+  const std::uint64_t before = first + (island + islands - 1) % islands;  // the ring's previous island
+  bool solved = false;
+  for (std::uint64_t i = first; i < first + islands; ++i)
+    solved = solved || reached_target_of(kept_result(kept, {stage - 1, i}));
+  EpochBytes neighbour = split_epoch(kept_result(kept, {stage - 1, before}));
+  if (islands == 1) neighbour.emigrants = gp::individuals_to_bytes({});
+  return next_input(split_epoch(kept_result(kept, {stage - 1, item})), neighbour, solved);
 }
 
 Bytes SymregWorkload::compute(const runtime::ItemTask& task) const {
@@ -67,6 +66,7 @@ Bytes SymregWorkload::evolve_island(const runtime::ItemTask& task) const {
   if (!input.has_state) input.state.population = gp::random_population(opts, task.random(0));
   if (input.solved || input.state.reached_target) {  // solved: the island keeps its state
     epoch.state = std::move(input.state);
+    epoch.emigrants = gp::pick_emigrants(epoch.state.population, settings_.migrants, opts);
     return encode_epoch(epoch);
   }
   const std::size_t done = task.id.stage * settings_.migration_interval;
@@ -79,9 +79,21 @@ Bytes SymregWorkload::evolve_island(const runtime::ItemTask& task) const {
     if (front.insert(entry)) epoch.additions.push_back(entry);
   epoch.state = {std::move(evolved.population), front.entries(),
                  input.state.reached_target || evolved.stats.reached_target};
+  epoch.emigrants = gp::pick_emigrants(epoch.state.population, settings_.migrants, opts);
   epoch.evaluations = evolved.stats.evaluations;
   epoch.best_error = evolved.stats.best_error;
   return encode_epoch(epoch);
+}
+
+std::uint32_t SymregWorkload::next_stage(std::uint32_t completed, const ItemResults& kept) const {
+  if (is_final(completed) || is_final(completed + 1)) return completed + 1;
+  for (std::size_t o = 0; o < settings_.data->outputs.size(); ++o) {
+    bool solved = false;
+    for (std::uint64_t i = o * settings_.islands; i < (o + 1) * settings_.islands; ++i)
+      solved = solved || reached_target_of(kept_result(kept, {completed, i}));
+    if (!solved) return completed + 1;
+  }
+  return std::uint32_t(settings_.epochs());
 }
 
 std::uint32_t SymregWorkload::kept_through(WorkItemId id) const {

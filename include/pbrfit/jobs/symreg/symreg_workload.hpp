@@ -30,6 +30,8 @@ class SymregWorkload final : public runtime::Workload {
   Bytes compute(const runtime::ItemTask& task) const override;
   std::vector<store::Block> blocks(WorkItemId id, const Bytes& result) const override;
   std::uint32_t kept_through(WorkItemId id) const override;
+  // Once every output has an island at the target error, the remaining epochs are skipped.
+  std::uint32_t next_stage(std::uint32_t completed, const ItemResults& kept) const override;
   void fold_summary(Bytes& summary, WorkItemId id, const Bytes& result) const override;
   std::string headline(const Bytes& summary) const override;
   double work_done(const Bytes& summary) const override;
@@ -42,7 +44,7 @@ class SymregWorkload final : public runtime::Workload {
   const gp::EvolveOptions& options(std::size_t output) const { return options_[output]; }
   Bytes evolve_island(const runtime::ItemTask& task) const;
   Bytes final_fronts(const runtime::ItemTask& task) const;
-  std::vector<store::Block> epoch_blocks(WorkItemId id, const IslandEpoch& epoch) const;
+  std::vector<store::Block> epoch_blocks(WorkItemId id, const EpochRecord& epoch) const;
   store::Group output_group(std::size_t output) const;
 
   SymregSettings settings_;
