@@ -59,6 +59,18 @@ void transcendental_block(Opcode op, const T* a, const T* b, T* out, std::size_t
     case Opcode::cos:
       y = x.cos();
       break;
+    case Opcode::tan:
+      y = x.tan();
+      break;
+    case Opcode::asin:
+      y = x.asin();
+      break;
+    case Opcode::acos:
+      y = x.acos();
+      break;
+    case Opcode::atan:
+      y = x.atan();
+      break;
     default:
       break;
   }

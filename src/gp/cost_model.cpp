@@ -11,6 +11,8 @@ CostTable gcn_cost_table() {
   for (Opcode op : {Opcode::exp2, Opcode::log2, Opcode::sqrt, Opcode::rsqrt}) table[op] = 4.0;
   for (Opcode op : {Opcode::div, Opcode::exp, Opcode::log, Opcode::sin, Opcode::cos}) table[op] = 5.0;
   table[Opcode::pow] = 9.0;
+  table[Opcode::tan] = 9.0;  // sin / cos
+  for (Opcode op : {Opcode::asin, Opcode::acos, Opcode::atan}) table[op] = 10.0;  // no hardware unit: a short polynomial
   table[Opcode::identity] = 0.0;
   return table;
 }

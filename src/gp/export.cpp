@@ -115,6 +115,14 @@ std::string Emitter::expression(const Instruction& instruction) const {
       return joined({s, "sin(", a, ")"});
     case Opcode::cos:
       return joined({s, "cos(", a, ")"});
+    case Opcode::tan:
+      return joined({s, "tan(", a, ")"});
+    case Opcode::asin:
+      return joined({s, "asin(", a, ")"});
+    case Opcode::acos:
+      return joined({s, "acos(", a, ")"});
+    case Opcode::atan:
+      return joined({s, "atan(", a, ")"});
     case Opcode::saturate: {
       const std::string zero = literal(0.0);
       const std::string one = literal(1.0);

@@ -5,7 +5,8 @@
 // The default table follows GCN issue rates: full-rate operations (add, sub, mul, fma, min, max, abs,
 // neg, saturate) cost 1; the quarter-rate transcendentals (exp2, log2, sqrt, rsqrt: 4); division is a
 // reciprocal and a multiply (5); exp, log, sin and cos add the multiply that rescales their argument or
-// result (5); pow = log2, multiply, exp2 (9); identity is a copy the compiler removes (0). The table is
+// result (5); pow = log2, multiply, exp2 (9); tan = sin / cos (9); asin, acos and atan have no hardware unit
+// and become short polynomials with a square root (10); identity is a copy the compiler removes (0). The table is
 // configurable per run; every entry must be finite and >= 0.
 #include <array>
 #include <cstddef>

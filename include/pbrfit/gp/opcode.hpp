@@ -34,9 +34,13 @@ enum class Opcode : std::uint8_t {
   sin,
   cos,
   saturate,
+  tan,
+  asin,
+  acos,
+  atan,
 };
 
-inline constexpr std::size_t opcode_count = 20;
+inline constexpr std::size_t opcode_count = 24;
 
 struct OpcodeInfo {
   std::string_view name;  // lowercase, as in expression texts: "add", "sqrt", "saturate"
@@ -49,6 +53,7 @@ inline constexpr std::array<OpcodeInfo, opcode_count> opcode_table{{
     {"fma", 3, false},      {"min", 2, true},    {"max", 2, true},  {"abs", 1, true},   {"neg", 1, false},
     {"sqrt", 1, false},     {"rsqrt", 1, false}, {"exp", 1, false}, {"exp2", 1, false}, {"log", 1, false},
     {"log2", 1, false},     {"pow", 2, false},   {"sin", 1, false}, {"cos", 1, false},  {"saturate", 1, true},
+    {"tan", 1, false},      {"asin", 1, false},  {"acos", 1, false}, {"atan", 1, false},
 }};
 
 constexpr const OpcodeInfo& info(Opcode op) { return opcode_table[static_cast<std::size_t>(op)]; }

@@ -5,8 +5,8 @@
 //
 // Protected semantics, chosen so that they cost nothing extra on a GPU (abs is a free input modifier):
 //  - sqrt, rsqrt, log, log2 take |a|; pow(a, b) = exp2(b * log2(|a|)), as GPUs implement it;
-//  - division, overflow and poles are not protected: they give +-inf or NaN, and an output that is not
-//    finite at some row gives the program the worst error (fitness_evaluator.hpp);
+//  - division, overflow, poles and asin/acos beyond [-1, 1] are not protected: they give +-inf or NaN, and
+//    an output that is not finite at some row gives the program the worst error (fitness_evaluator.hpp);
 //  - min, max and saturate propagate NaN (a NaN on the path to the output is never hidden);
 //  - fma(a, b, c) = a * b + c, rounded twice (the interpreter never fuses).
 #include <cmath>
@@ -58,6 +58,14 @@ T apply(Opcode op, T a, T b, T c) {
       return std::cos(a);
     case Opcode::saturate:
       return a < T(0) ? T(0) : (a > T(1) ? T(1) : a);
+    case Opcode::tan:
+      return std::tan(a);
+    case Opcode::asin:
+      return std::asin(a);
+    case Opcode::acos:
+      return std::acos(a);
+    case Opcode::atan:
+      return std::atan(a);
   }
   return a;
 }
