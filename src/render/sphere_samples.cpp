@@ -41,6 +41,10 @@ void visit_pixel(const EnvironmentMap& environment, const std::vector<std::array
 
 }  // namespace
 
+std::uint32_t merl_cell_of_pair(const Vector3& wi, const Vector3& wo) {
+  return std::uint32_t(brdf::merl_cell_of(brdf::to_half_diff(wi, wo)).flat());
+}
+
 void visit_light_samples(const EnvironmentMap& environment, const SphereView& view, std::size_t samples_per_pixel,
                          PixelRange range, const SampleVisitor& visit) {
   const auto points = integrate::halton_points(samples_per_pixel);
@@ -61,7 +65,7 @@ SphereSamples::SphereSamples(const EnvironmentMap& environment, const SphereView
                           wi_.push_back(float(wi[k]));
                           weight_.push_back(float(weight[k]));
                         }
-                        cell_.push_back(std::uint32_t(brdf::merl_cell_of(brdf::to_half_diff(wi, wo)).flat()));
+                        cell_.push_back(merl_cell_of_pair(wi, wo));
                       });
   std::partial_sum(first_.begin(), first_.end(), first_.begin());
 }

@@ -28,6 +28,9 @@ namespace pbrfit::render {
 using SampleVisitor =
     std::function<void(std::size_t pixel, const ltc::Vector3& wi, const ltc::Vector3& wo, const Rgb& weight)>;
 
+// The flat MERL cell (brdf/merl_grid.hpp) of a pair of local directions.
+std::uint32_t merl_cell_of_pair(const ltc::Vector3& wi, const ltc::Vector3& wo);
+
 // Visits the samples of the pixels of `range` in pixel order, then sample order; off-sphere pixels have none.
 void visit_light_samples(const EnvironmentMap& environment, const SphereView& view, std::size_t samples_per_pixel,
                          PixelRange range, const SampleVisitor& visit);

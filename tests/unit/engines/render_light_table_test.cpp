@@ -97,6 +97,20 @@ TEST_CASE("the light weight table holds the unit-BRDF render, cell by cell") {
   CHECK(std::all_of(table.values().begin(), table.values().end(), [](double w) { return w >= 0.0; }));
 }
 
+TEST_CASE("a light weight table built from the sampling loop by pixel ranges matches the stored samples'") {
+  const EnvironmentMap room = procedural_interior();
+  const SphereView view(48);
+  LightWeightTable direct(room, view, 64, {0, 1000});
+  direct += LightWeightTable(room, view, 64, {1000, view.pixels()});
+  const LightWeightTable& stored = room_table();
+  for (std::size_t k = 0; k < 3; ++k) CHECK_THAT(direct.total()[k], WithinRel(stored.total()[k], 1e-6));
+  std::size_t differ = 0;
+  for (std::size_t i = 0; i < stored.values().size(); ++i)
+    differ += std::abs(direct.values()[i] - stored.values()[i]) > 1e-6 * (stored.values()[i] + 1e-3);
+  CHECK(differ == 0);  // stored cells come from the directions before rounding; only weights are rounded
+  CHECK(LightWeightTable().lit_cells() == 0);
+}
+
 TEST_CASE("pruning keeps the heaviest cells up to the kept share and reports what it drops") {
   const LightWeightTable& table = room_table();
   const PrunedLightTable pruned(table);
