@@ -4,23 +4,20 @@
 #include <cmath>
 #include <numbers>
 
+#include "pbrfit/core/bin_index.hpp"
+
 namespace pbrfit::brdf {
 namespace {
 
 constexpr double half_pi = 0.5 * std::numbers::pi;
-
-std::size_t clamped_index(double position, std::size_t count) {
-  if (!(position > 0.0)) return 0;
-  return std::min(std::size_t(position * double(count)), count - 1);
-}
 
 }  // namespace
 
 MerlCell merl_cell_of(const HalfDiff& a) {
   double phi_d = a.phi_d;
   if (phi_d < 0.0) phi_d += std::numbers::pi;  // reciprocity
-  return {clamped_index(std::sqrt(std::max(a.theta_h, 0.0) / half_pi), merl_theta_h),
-          clamped_index(a.theta_d / half_pi, merl_theta_d), clamped_index(phi_d / std::numbers::pi, merl_phi_d)};
+  return {bin_index(std::sqrt(std::max(a.theta_h, 0.0) / half_pi), merl_theta_h),
+          bin_index(a.theta_d / half_pi, merl_theta_d), bin_index(phi_d / std::numbers::pi, merl_phi_d)};
 }
 
 MerlCell merl_cell_at(std::size_t flat) {
