@@ -1,5 +1,7 @@
 #include "pbrfit/gp/parameter_fit.hpp"
 
+#include <algorithm>
+
 #include "pbrfit/gp/expression_parser.hpp"
 #include "pbrfit/optimize/nelder_mead.hpp"
 
@@ -22,7 +24,8 @@ ParameterFitResult fit_parameters(const Program& program, std::span<const std::v
   };
   ParameterFitResult best{std::vector<double>(n, 0.0), worst_error, 0};
   optimize::NelderMeadOptions search;
-  search.initial_step = 0.02;
+  // The first simplex spans a tenth of the start range: the box is often far wider than the values.
+  search.initial_step = std::max(0.1 * (options.start_upper - options.start_lower), 1e-3) / (options.upper - options.lower);
   search.max_restarts = 2;
   for (std::size_t s = 0; s < options.starts; ++s) {
     RandomStream draw = random.derive(s);

@@ -58,6 +58,13 @@ Argument build(const SyntaxTree& tree, std::size_t i, ProgramBuilder& builder) {
   return builder.append(node.op, arguments.data(), std::size_t(arity(node.op)));
 }
 
+// The fields a node's kind does not use take their defaults, so that equal trees compare equal.
+void canonicalize(SyntaxNode& node) {
+  if (node.kind != NodeKind::operation) node.op = Opcode::identity;
+  if (node.kind != NodeKind::input && node.kind != NodeKind::parameter) node.index = 0;
+  if (node.kind != NodeKind::constant) node.value = 1.0;
+}
+
 }  // namespace
 
 SyntaxTree::SyntaxTree(std::vector<SyntaxNode> nodes) : nodes_(std::move(nodes)), ends_(nodes_.size()) {
@@ -65,7 +72,8 @@ SyntaxTree::SyntaxTree(std::vector<SyntaxNode> nodes) : nodes_(std::move(nodes))
   // Right to left: a node's subtree ends where its last child's subtree ends.
   std::vector<std::size_t> pending;  // starts of complete subtrees to the right, nearest last
   for (std::size_t i = nodes_.size(); i-- > 0;) {
-    const SyntaxNode& node = nodes_[i];
+    SyntaxNode& node = nodes_[i];
+    canonicalize(node);
     if (node.kind == NodeKind::constant && !std::isfinite(node.value)) throw std::invalid_argument("syntax tree: a constant is not finite");
     std::size_t end = i + 1;
     for (std::size_t c = 0; c < children_of(node); ++c) {

@@ -39,6 +39,7 @@ class SyntaxTree {
   SyntaxTree subtree(std::size_t i) const;
   // This tree with node i's subtree replaced by `replacement`.
   SyntaxTree with_subtree(std::size_t i, const SyntaxTree& replacement) const;
+  // Equal trees compare equal: the constructor resets the fields a node's kind does not use.
   bool operator==(const SyntaxTree& other) const { return nodes_ == other.nodes_; }
 
  private:
