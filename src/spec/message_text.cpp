@@ -25,6 +25,13 @@ std::string join(const std::vector<std::string>& items, std::string_view separat
   return out;
 }
 
+std::string choice_list(const std::vector<std::string>& choices) {
+  constexpr std::size_t spelled_out = 30;  // a longer list (100 MERL names) would drown the one-line error
+  if (choices.size() <= spelled_out) return "one of " + join(choices);
+  return "one of " + std::to_string(choices.size()) + " names (" + choices.front() + ", " + choices[1] + ", ..., " +
+         choices.back() + ")";
+}
+
 namespace {
 
 // "a list of 2 integers", "a list of 1 to 3 numbers", "a list of at least 1 mapping".

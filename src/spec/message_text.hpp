@@ -15,6 +15,8 @@ using pbrfit::quote;  // core/quoted_text.hpp
 std::string format_number(double value);
 
 std::string join(const std::vector<std::string>& items, std::string_view separator = ", ");
+// "one of a, b, c" for short lists; "one of 100 names (a, b, ..., z)" for long ones.
+std::string choice_list(const std::vector<std::string>& choices);
 
 // "an integer", "a number", "true or false", "a string", "one of a, b, c",
 // "a list of 2 integers" / "a list of 1 to 3 integers", "a mapping".

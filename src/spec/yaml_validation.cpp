@@ -136,7 +136,7 @@ std::vector<std::string> checked_string_list(const Field& field, const YAML::Nod
       reject_value(where, item_subject(field, i), "a non-empty string", source.describe(item));
     }
     if (!field.choices.empty() && std::ranges::find(field.choices, item.Scalar()) == field.choices.end()) {
-      throw InputError(where, item_subject(field, i) + " must be one of " + join(field.choices) + "; got " +
+      throw InputError(where, item_subject(field, i) + " must be " + choice_list(field.choices) + "; got " +
                                   source.describe(item) + suggestion(item.Scalar(), field.choices));
     }
     texts.push_back(item.Scalar());

@@ -1,5 +1,7 @@
 #include "pbrfit/store/atomic_file.hpp"
 
+#include <unistd.h>
+
 #include <cstdio>
 
 #include "pbrfit/core/error.hpp"
@@ -8,7 +10,7 @@
 namespace pbrfit::store {
 
 void replace_file_atomically(const std::string& path, std::span<const std::byte> content) {
-  const std::string temporary = path + ".tmp";
+  const std::string temporary = path + "." + std::to_string(::getpid()) + ".tmp";  // processes may race
   try {
     PosixFile file = PosixFile::create(temporary);
     file.write_all(content);

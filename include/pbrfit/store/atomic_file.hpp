@@ -8,9 +8,10 @@
 
 namespace pbrfit::store {
 
-// Writes PATH.tmp, fsyncs it, renames it over PATH and fsyncs the directory, so that a crash at any
-// instant leaves either the old or the new content. On failure PATH is untouched, PATH.tmp removed and
-// RunError thrown with the operating system's reason.
+// Writes PATH.<pid>.tmp (processes racing to write one file do not share a temporary), fsyncs it,
+// renames it over PATH and fsyncs the directory, so that a crash at any instant leaves either the old or
+// the new content. On failure PATH is untouched, the temporary removed and RunError thrown with the
+// operating system's reason.
 void replace_file_atomically(const std::string& path, std::span<const std::byte> content);
 
 // The whole of a regular file of at most max_bytes; throws InputError naming the file for anything else

@@ -1,5 +1,6 @@
 #include "pbrfit/jobs/symreg/island_epoch.hpp"
 
+#include "pbrfit/core/decoded_record.hpp"
 #include "pbrfit/core/error.hpp"
 #include "pbrfit/gp/program_bytes.hpp"
 
@@ -20,18 +21,6 @@ IslandState read_state(ByteReader& in, std::size_t inputs) {
   return state;
 }
 
-template <class Read>
-auto decoded(std::span<const std::byte> bytes, const char* what, Read&& read) {
-  try {
-    ByteReader in(bytes);
-    auto value = read(in);
-    if (in.remaining() != 0) throw ByteFormatError(in.offset(), "trailing bytes");
-    return value;
-  } catch (const ByteFormatError& e) {
-    throw RunError(std::string("a symbolic-regression ") + what + " is damaged: " + e.what());
-  }
-}
-
 }  // namespace
 
 // An epoch: [u8 reached_target][varint generation][bytes emigrants][bytes state][bytes additions]
@@ -50,7 +39,7 @@ Bytes encode_epoch(const IslandEpoch& epoch) {
 }
 
 IslandEpoch decode_epoch(std::span<const std::byte> bytes, std::size_t inputs) {
-  return decoded(bytes, "island epoch", [&](ByteReader& in) {
+  return decoded_record(bytes, "symbolic-regression island epoch", [&](ByteReader& in) {
     IslandEpoch epoch;
     const bool reached = in.get<std::uint8_t>() != 0;
     const std::uint64_t generation = in.get_varint();
@@ -68,7 +57,7 @@ IslandEpoch decode_epoch(std::span<const std::byte> bytes, std::size_t inputs) {
 }
 
 EpochRecord decode_record(std::span<const std::byte> bytes, std::size_t inputs) {
-  return decoded(bytes, "island epoch", [&](ByteReader& in) {
+  return decoded_record(bytes, "symbolic-regression island epoch", [&](ByteReader& in) {
     EpochRecord record;
     in.get<std::uint8_t>();
     record.generation = in.get_varint();
@@ -85,7 +74,7 @@ EpochRecord decode_record(std::span<const std::byte> bytes, std::size_t inputs) 
 }
 
 EpochBytes split_epoch(std::span<const std::byte> bytes) {
-  return decoded(bytes, "island epoch", [&](ByteReader& in) {
+  return decoded_record(bytes, "symbolic-regression island epoch", [&](ByteReader& in) {
     EpochBytes parts;
     parts.reached_target = in.get<std::uint8_t>() != 0;
     in.get_varint();  // generation
@@ -120,7 +109,7 @@ Bytes encode_input(const EpochInput& input) {
 }
 
 EpochInput decode_input(std::span<const std::byte> bytes, std::size_t inputs) {
-  return decoded(bytes, "island input", [&](ByteReader& in) {
+  return decoded_record(bytes, "symbolic-regression island input", [&](ByteReader& in) {
     EpochInput input;
     input.has_state = in.get<std::uint8_t>() != 0;
     if (input.has_state) input.state = read_state(in, inputs);

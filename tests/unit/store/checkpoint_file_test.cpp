@@ -73,7 +73,7 @@ TEST_CASE("a snapshot and the progress appended after it read back as one state"
   CHECK(s.retained.at({1, 2}) == Bytes{std::byte{3}});
   CHECK_FALSE(s.retained.contains({1, 0}));
   CHECK(s.appends.at(0) == Bytes{std::byte{8}});
-  CHECK_FALSE(std::filesystem::exists(path + ".tmp"));
+  CHECK_FALSE(temporary_left_beside(path));
 }
 
 TEST_CASE("a checkpoint cut short in its last record falls back to the record before; earlier damage is refused") {
@@ -128,7 +128,7 @@ TEST_CASE("atomic replacement leaves the new content and no temporary file") {
   store::replace_file_atomically(path, Bytes{std::byte{1}});
   store::replace_file_atomically(path, Bytes{std::byte{2}, std::byte{3}});
   CHECK(store::read_whole_file(path, 10) == Bytes{std::byte{2}, std::byte{3}});
-  CHECK_FALSE(std::filesystem::exists(path + ".tmp"));
+  CHECK_FALSE(temporary_left_beside(path));
 }
 
 TEST_CASE("only regular files of bounded size are read whole") {

@@ -162,7 +162,7 @@ TEST_CASE("readers see only published states: the result file is replaced whole,
   file.complete();
   CHECK(store::read_table(path, "grid/per_row") == std::vector<double>{1.0, 2.0});
   CHECK_FALSE(std::filesystem::exists(file.working_path()));
-  CHECK_FALSE(std::filesystem::exists(path + ".tmp"));
+  CHECK_FALSE(temporary_left_beside(path));
 }
 
 TEST_CASE("a result file in a directory that cannot be written is refused with the reason") {

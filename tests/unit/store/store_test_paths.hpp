@@ -8,3 +8,14 @@ inline std::string temporary_path(const std::string& name) {
   std::filesystem::create_directories(dir);
   return (dir / name).string();
 }
+
+// Whether a temporary file of an atomic replacement of `path` (PATH.<pid>.tmp) is left beside it.
+inline bool temporary_left_beside(const std::string& path) {
+  const auto p = std::filesystem::path(path);
+  const std::string stem = p.filename().string() + ".";
+  for (const auto& entry : std::filesystem::directory_iterator(p.parent_path())) {
+    const std::string name = entry.path().filename().string();
+    if (name.starts_with(stem) && name.ends_with(".tmp")) return true;
+  }
+  return false;
+}
