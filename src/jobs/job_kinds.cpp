@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "pbrfit/jobs/brdf/brdf_search_kind.hpp"
 #include "pbrfit/jobs/lut/lut_kind.hpp"
 #include "pbrfit/jobs/sweep/sweep_kind.hpp"
 #include "pbrfit/jobs/symreg/symreg_kind.hpp"
@@ -9,7 +10,8 @@
 namespace pbrfit::jobs {
 
 const std::vector<JobKind>& job_kinds() {
-  static const std::vector<JobKind> kinds = {lut::lut_kind(), sweep::sweep_kind(), symreg::symreg_kind()};
+  static const std::vector<JobKind> kinds = {lut::lut_kind(), sweep::sweep_kind(), symreg::symreg_kind(),
+                                              brdf::brdf_search_kind()};
   return kinds;
 }
 

@@ -34,7 +34,7 @@ note "a result of another kind"
 cp "$PBRFIT_SOURCE_DIR/tests/jobs/small-dfg.yaml" dfg.yaml
 "$PBRFIT" run dfg.yaml -q --output dfg.h5
 export_ dfg.h5
-expect_refusal 2 "dfg.h5: error: not a symbolic-regression result (job kind 'lut'); export reads the fronts of symreg results"
+expect_refusal 2 "dfg.h5: error: not a symbolic-regression or genBRDF result (job kind 'lut'); export reads the fronts of symreg and brdf_search results"
 
 note "an unknown output, a member out of range, bad option values"
 cp "$PBRFIT_SOURCE_DIR/tests/jobs/small-symreg.yaml" symreg.yaml

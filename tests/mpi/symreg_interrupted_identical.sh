@@ -24,18 +24,9 @@ run_ranks 2 run job.yaml --output reference.h5 -q
 expect_status 0
 
 note "SIGTERM after a few epochs"
-start_ranks 2 run job.yaml -q
-wait_for_items result.h5 40
-kill -TERM $(rank_pids)
-wait_background
-expect_status 75 "ranks stopped by SIGTERM"
-done_items=$("$PBRFIT" status result.h5 | sed -n 's/^progress: *\([0-9]*\) of.*/\1/p')
-
+interrupt_after 40 TERM 2 run job.yaml -q
 note "resume on 1 rank, then SIGKILL"
-start_ranks 1 run job.yaml --resume -q
-wait_for_items result.h5 $((done_items + 40))
-kill_session KILL
-wait_background
+interrupt_after $(($(items_done result.h5) + 40)) KILL 1 run job.yaml --resume -q
 
 note "resume to completion on 2 ranks"
 run_ranks 2 run job.yaml --resume -q

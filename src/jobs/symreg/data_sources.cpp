@@ -5,6 +5,7 @@
 
 #include "pbrfit/core/error.hpp"
 #include "pbrfit/gp/benchmark_problems.hpp"
+#include "pbrfit/jobs/read_at_key.hpp"
 #include "pbrfit/jobs/symreg/csv_table.hpp"
 #include "pbrfit/jobs/symreg/result_table_source.hpp"
 #include "pbrfit/jobs/symreg/symreg_data.hpp"
@@ -31,21 +32,9 @@ SymregData from_generator(const spec::Section& s) {
                      std::to_string(problem->lower) + ", " + std::to_string(problem->upper) + "]"};
 }
 
-// A data file that cannot be opened at all is reported at the job key naming it; problems inside a file
-// keep their own position in it.
-template <class Read>
-auto opened(const spec::Section& s, const char* key, Read&& read) {
-  try {
-    return read();
-  } catch (const InputError& e) {
-    if (e.where().line != 0) throw;
-    s.reject(key, "names " + s.get_string(key) + ": " + e.message());
-  }
-}
-
 SymregData from_csv(const spec::Section& s) {
   const std::string& path = s.get_string("csv");
-  const Bytes bytes = opened(s, "csv", [&] { return store::read_whole_file(path, max_csv_bytes); });
+  const Bytes bytes = read_at_key(s, "csv", path, [&] { return store::read_whole_file(path, max_csv_bytes); });
   const CsvTable table = parse_csv({reinterpret_cast<const char*>(bytes.data()), bytes.size()}, path);
   if (!s.given("inputs") || !s.given("targets")) s.reject("csv", "needs 'inputs' and 'targets': the columns to use");
   std::vector<std::vector<double>> inputs;
@@ -59,7 +48,7 @@ SymregData from_csv(const spec::Section& s) {
 
 SymregData from_result(const spec::Section& s) {
   const std::string& path = s.get_string("result");
-  const auto summary = opened(s, "result", [&] { return store::read_result_summary(path); });
+  const auto summary = read_at_key(s, "result", path, [&] { return store::read_result_summary(path); });
   if (summary.state != "complete")
     s.reject("result", "names " + path + ", whose job is " + summary.state + ", not complete");
   if (!s.given("tables")) s.reject("result", "needs 'tables': the tables to regress, e.g. [dfg/scale]");

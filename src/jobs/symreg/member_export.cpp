@@ -3,6 +3,7 @@
 #include "pbrfit/jobs/symreg/member_export.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <variant>
 
@@ -81,8 +82,10 @@ std::string comment_line(const store::ResultSummary& summary, const OutputFront&
   const FrontMember& m = front.members[member];
   return "// " + one_line(summary.job_name) + ", output " + one_line(front.output) + ", member " +
          std::to_string(member) + " of " + std::to_string(front.members.size()) + (m.knee ? " (the knee)" : "") +
-         ": cost " + number_text(m.cost) + ", RMSE " + number_text(m.rmse) + ", max abs error " +
-         number_text(m.max_abs_error) + " (in double, on the training rows)\n";
+         ": cost " + number_text(m.cost) + ", RMSE " + number_text(m.rmse) +
+         (std::isnan(m.max_abs_error) ? std::string(" (the metric's)")
+                                      : ", max abs error " + number_text(m.max_abs_error) + " (in double, on the training rows)") +
+         "\n";
 }
 
 // The inputs' portable names, made distinct ("a.b" and "a_b" both become a_b: the second a_b_2).
@@ -113,9 +116,10 @@ gp::ExportOptions export_options(const MemberExport& request, const OutputFront&
 }  // namespace
 
 std::string export_member(const std::string& path, const store::ResultSummary& summary, const MemberExport& request) {
-  if (summary.job_kind != "symreg")
-    throw InputError({path}, "not a symbolic-regression result (job kind " + quote(summary.job_kind) +
-                                 "); export reads the fronts of symreg results");
+  if (summary.job_kind != "symreg" && summary.job_kind != "brdf_search")
+    throw InputError({path}, "not a symbolic-regression or genBRDF result (job kind " + quote(summary.job_kind) +
+                                 "); export reads the fronts of symreg and brdf_search results");
+  // A BRDF's inputs attribute lists its parameters p0..p3 last: they become arguments of the function.
   const OutputFront front = read_output_front(path, chosen_output(path, request.output));
   const gp::ExportOptions options = export_options(request, front);
   const std::size_t member = chosen_member(path, summary, front, request.member);

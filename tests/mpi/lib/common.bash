@@ -79,11 +79,30 @@ wait_for_items() {
   fail "timed out waiting for $wanted items in $file"
 }
 
-# Waits (briefly) until `pbrfit status` shows a state line matching the pattern; a killed process can
-# take a moment to disappear.
+# Runs `pbrfit ARGS` on N ranks in the background until result.h5 reports ITEMS finished items, then
+# stops it: SIGNAL TERM or INT goes to the ranks (which must exit 75), KILL to the whole session.
+interrupt_after() {
+  local items=$1 signal=$2 ranks=$3; shift 3
+  start_ranks "$ranks" "$@"
+  wait_for_items result.h5 "$items"
+  if [[ $signal == KILL ]]; then
+    kill_session KILL
+    wait_background
+  else
+    kill "-$signal" $(rank_pids)
+    wait_background
+    expect_status 75 "ranks stopped by SIG$signal"
+  fi
+}
+
+# The number of finished items `pbrfit status` reports for a result file.
+items_done() { "$PBRFIT" status "$1" | sed -n 's/^progress: *\([0-9]*\) of.*/\1/p'; }
+
+# Waits (up to 10 s) until `pbrfit status` shows a state line matching the pattern; a killed process can
+# take a moment to disappear, longer on a loaded machine.
 wait_for_state() {
   local file=$1 pattern=$2 i
-  for i in $(seq 1 30); do
+  for i in $(seq 1 100); do
     "$PBRFIT" status "$file" > status.txt 2>&1 && grep -q "^state: *$pattern" status.txt && return 0
     sleep 0.1
   done

@@ -132,6 +132,6 @@ TEST_CASE("export refuses, on one line naming the file or option, what it cannot
   auto not_symreg = store::read_result_summary(path);
   not_symreg.job_kind = "lut";
   REQUIRE_THROWS_WITH(export_member(path, not_symreg, {}),
-                      path + ": error: not a symbolic-regression result (job kind 'lut'); export reads the fronts of "
-                             "symreg results");
+                      path + ": error: not a symbolic-regression or genBRDF result (job kind 'lut'); export reads "
+                             "the fronts of symreg and brdf_search results");
 }

@@ -1,0 +1,32 @@
+#include "pbrfit/jobs/brdf/candidate_score.hpp"
+
+#include <cmath>
+
+#include "pbrfit/gp/batch_interpreter.hpp"
+#include "pbrfit/gp/fixed_part.hpp"
+
+namespace pbrfit::jobs::brdf {
+
+CandidateScore score_candidate(const gp::CompiledTree& candidate, const MetricData& data,
+                               const gp::ParameterFitOptions& options, const RandomStream& random) {
+  CandidateScore score;
+  double total = 0.0;
+  for (std::size_t m = 0; m < data.materials(); ++m) {
+    double material = 0.0;
+    for (std::size_t c = 0; c < 3; ++c) {
+      const auto folded = gp::fold_fixed_part(candidate.program, candidate.parameter_slots, data.channel(m, c).data);
+      gp::BatchInterpreter<float> interpreter(folded.dataset);
+      const auto fit = gp::fit_parameters(folded.program, folded.parameter_slots, interpreter, options,
+                                          random.derive(3 * m + c));
+      score.evaluations += fit.evaluations;
+      score.parameters.push_back(fit.parameters);
+      material += fit.error * fit.error * data.channel(m, c).weight_sum;  // S' of this fit
+    }
+    score.material_errors.push_back(std::sqrt(material));
+    total += material;
+  }
+  score.error = std::isfinite(total) ? std::sqrt(total) : gp::worst_error;
+  return score;
+}
+
+}  // namespace pbrfit::jobs::brdf

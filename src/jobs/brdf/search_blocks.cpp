@@ -1,0 +1,83 @@
+// The blocks of a genBRDF search's items (brdf_search_workload.hpp): the log row of a breeding item, the
+// archive additions of every front item, and the front, its simplified knee and the evaluated models at
+// the end.
+#include <limits>
+
+#include "pbrfit/gp/knee.hpp"
+#include "pbrfit/jobs/brdf/brdf_inputs.hpp"
+#include "pbrfit/jobs/brdf/brdf_search_workload.hpp"
+#include "search_records.hpp"
+
+namespace pbrfit::jobs::brdf {
+namespace {
+
+constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+
+// The log rows of the last generation, which no breeding item describes.
+store::Block last_log_block(const FrontRecord& record, std::size_t generation) {
+  store::Block log{"brdf", "log", {0}, {record.last_generation.size()}};
+  for (std::size_t island = 0; island < record.last_generation.size(); ++island) {
+    const auto& s = record.last_generation[island];
+    log.values.insert(log.values.end(), {double(generation), double(island), s.best_error,
+                                         s.median_size, double(s.infeasible), 0.0});
+  }
+  return log;
+}
+
+}  // namespace
+
+std::vector<store::Block> BrdfSearchWorkload::blocks(WorkItemId id, const Bytes& result) const {
+  switch (role(id)) {
+    case Role::front: return front_blocks(id, result);
+    case Role::breeding: break;
+    case Role::evaluation: return {};
+    case Role::material:
+    case Role::averages: return evaluation_blocks(id, result);
+  }
+  if (generation_of(id.stage) == 0) return {};
+  const auto record = decode_breed(result);
+  return {{"brdf", "log", {0}, {1},
+           {double(record.generation), double(id.item), record.best_error, record.median_size,
+            double(record.infeasible), double(record.migrants_in)}}};
+}
+
+std::vector<store::Block> BrdfSearchWorkload::front_blocks(WorkItemId id, const Bytes& result) const {
+  std::vector<store::Block> out;
+  const auto record = decode_front(result, brdf_input_count, brdf_parameter_count);
+  if (!record.additions.empty()) {
+    store::Block archive{"brdf", "archive", {0}, {record.additions.size()}};
+    for (const auto& a : record.additions) {
+      archive.values.insert(archive.values.end(), {a.size(), a.error, double(a.generation)});
+      archive.texts.push_back(expression(a.tree));
+    }
+    out.push_back(std::move(archive));
+  }
+  if (id.stage == front_stage() && !record.last_generation.empty()) out.push_back(last_log_block(record, settings_.generations - 1));
+  if (id.stage != front_stage() || record.front.empty()) return out;
+  std::vector<gp::Fitness> fitness;
+  for (const auto& f : record.front) fitness.push_back({f.error, f.size(), 0.0, true});
+  const std::size_t knee = gp::knee_index(fitness);
+  store::Block front{"brdf", "front", {0}, {record.front.size()}};
+  for (std::size_t k = 0; k < record.front.size(); ++k) {
+    const auto& f = record.front[k];
+    std::size_t operations = 0, piecewise = 0;
+    for (const auto& node : f.tree.nodes()) {
+      operations += node.kind == gp::NodeKind::operation;
+      piecewise += node.kind == gp::NodeKind::operation && gp::is_piecewise(node.op);
+    }
+    front.values.insert(front.values.end(), {f.size(), double(operations), double(piecewise), f.error, nan, nan,
+                                             double(f.generation), k == knee ? 1.0 : 0.0});
+    front.texts.insert(front.texts.end(), {expression(f.tree), ""});
+  }
+  out.push_back(std::move(front));
+  store::Block simplified{"brdf", "simplified", {0}, {record.simplified.size()}};
+  for (std::size_t k = 0; k < record.simplified.size(); ++k) {
+    simplified.values.insert(simplified.values.end(), {record.simplified[k].size(), record.simplified[k].error});
+    simplified.texts.insert(simplified.texts.end(), {k == 0 ? "knee" : "culled", expression(record.simplified[k].tree)});
+  }
+  if (!record.simplified.empty()) out.push_back(std::move(simplified));
+  if (settings_.evaluation.enabled) out.push_back(models_block(record));
+  return out;
+}
+
+}  // namespace pbrfit::jobs::brdf

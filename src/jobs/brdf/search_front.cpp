@@ -1,0 +1,116 @@
+// The Pareto front of a genBRDF search (brdf_search_workload.hpp): error vs tree size over every
+// generation, and the culling of the knee's sub-expressions at the end (Brady et al., section 1).
+#include <cmath>
+
+#include "pbrfit/gp/knee.hpp"
+#include "pbrfit/jobs/brdf/brdf_inputs.hpp"
+#include "pbrfit/jobs/brdf/candidate_score.hpp"
+#include "pbrfit/jobs/brdf/brdf_search_workload.hpp"
+#include "search_records.hpp"
+
+namespace pbrfit::jobs::brdf {
+namespace {
+
+constexpr std::size_t cull_budget = 60;    // candidate trees scored while culling
+constexpr double cull_tolerance = 1e-3;    // a culled tree may be this much worse, relatively
+
+bool dominates(const ScoredTree& a, const ScoredTree& b) {
+  return a.error <= b.error && a.size() <= b.size() && (a.error < b.error || a.size() < b.size());
+}
+
+// The non-dominated trees of front + candidates (the earlier kept on equal objectives), and those of the
+// candidates that made it.
+FrontRecord merged(std::vector<ScoredTree> front, const std::vector<ScoredTree>& candidates) {
+  FrontRecord out;
+  for (const auto& c : candidates) {
+    if (!std::isfinite(c.error)) continue;
+    bool beaten = false;
+    for (const auto& f : front) beaten = beaten || dominates(f, c) || (f.error == c.error && f.size() == c.size());
+    if (beaten) continue;
+    std::erase_if(front, [&](const ScoredTree& f) { return dominates(c, f); });
+    front.push_back(c);
+    out.additions.push_back(c);
+  }
+  std::stable_sort(front.begin(), front.end(), [](const auto& a, const auto& b) { return a.size() < b.size(); });
+  std::erase_if(out.additions, [&](const ScoredTree& a) {
+    return std::none_of(front.begin(), front.end(), [&](const ScoredTree& f) { return f.tree == a.tree; });
+  });
+  out.front = std::move(front);
+  return out;
+}
+
+// Per island (population consecutive candidates each), the log's figures of the last generation.
+std::vector<IslandStatistics> last_statistics(const std::vector<ScoredTree>& candidates, std::size_t population) {
+  std::vector<IslandStatistics> out;
+  for (std::size_t first = 0; first + population <= candidates.size(); first += population) {
+    std::vector<double> errors, sizes;
+    for (std::size_t k = first; k < first + population; ++k) errors.push_back(candidates[k].error), sizes.push_back(candidates[k].size());
+    out.push_back(island_statistics(errors, sizes));
+  }
+  return out;
+}
+
+}  // namespace
+
+Bytes BrdfSearchWorkload::front_input(std::uint32_t stage, const ItemResults& kept) const {
+  ByteWriter out;
+  if (stage == 0) return out.take();
+  const Bytes& previous = kept_result(kept, {stage - 2, item_count(stage - 2) - 1});
+  out.put_bytes(previous);
+  std::vector<ScoredTree> candidates;
+  for (auto& m : generation_members(stage, kept)) candidates.push_back({std::move(m.tree), m.error, generation_of(stage) - 1u});
+  write_scored(out, candidates);
+  return out.take();
+}
+
+Bytes BrdfSearchWorkload::keep_front(const runtime::ItemTask& task) const {
+  if (task.input.empty()) return encode(FrontRecord{});
+  ByteReader in(task.input);
+  const FrontRecord previous = decode_front(in.get_bytes(), brdf_input_count, brdf_parameter_count);
+  const auto candidates = read_scored(in, brdf_input_count, brdf_parameter_count);
+  FrontRecord record = merged(previous.front, candidates);
+  if (task.id.stage == front_stage()) record.last_generation = last_statistics(candidates, settings_.population);
+  if (task.id.stage == front_stage() && !record.front.empty()) {
+    std::vector<gp::Fitness> fitness;
+    for (const auto& f : record.front) fitness.push_back({f.error, f.size(), 0.0, true});
+    const ScoredTree& knee = record.front[gp::knee_index(fitness)];
+    record.simplified = {knee, cull(knee, task)};
+  }
+  return encode(record);
+}
+
+// Repeatedly replaces an operation's subtree by one of its operands or by 1 while the error stays within
+// cull_tolerance of the knee's (each candidate refitted), until nothing more goes or the budget is spent.
+ScoredTree BrdfSearchWorkload::cull(const ScoredTree& knee, const runtime::ItemTask& task) const {
+  const auto score = [&](const gp::SyntaxTree& tree) {
+    const auto compiled = gp::compile(tree, brdf_parameter_count);
+    return compiled ? score_candidate(*compiled, *settings_.data, settings_.fit, task.random(1)).error
+                    : gp::worst_error;
+  };
+  ScoredTree best{knee.tree, score(knee.tree), knee.generation};
+  const double allowed = best.error * (1.0 + cull_tolerance);
+  std::size_t spent = 0;
+  for (bool changed = true; changed && spent < cull_budget;) {
+    changed = false;
+    for (std::size_t i = 0; i < best.tree.size() && !changed && spent < cull_budget; ++i) {
+      const auto& node = best.tree.nodes()[i];
+      if (node.kind != gp::NodeKind::operation) continue;
+      std::vector<gp::SyntaxTree> replacements = {gp::SyntaxTree({gp::SyntaxNode{}})};
+      for (std::size_t child = i + 1; child < best.tree.subtree_end(i); child = best.tree.subtree_end(child))
+        replacements.push_back(best.tree.subtree(child));
+      for (const auto& r : replacements) {
+        if (spent++ >= cull_budget || task.stop_requested()) break;
+        const gp::SyntaxTree candidate = best.tree.with_subtree(i, r);
+        const double error = score(candidate);
+        if (error <= allowed) {
+          best = {candidate, error, knee.generation};
+          changed = true;
+          break;
+        }
+      }
+    }
+  }
+  return best;
+}
+
+}  // namespace pbrfit::jobs::brdf

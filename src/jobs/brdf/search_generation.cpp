@@ -1,0 +1,77 @@
+// The members of a generation of the genBRDF search (brdf_search_workload.hpp): the genomes and trees the
+// islands bred, the distinct trees the evaluation stage fits (each once, however many slots hold it), and
+// the errors mapped back to every slot.
+#include <stdexcept>
+#include <unordered_map>
+
+#include "pbrfit/jobs/brdf/brdf_search_workload.hpp"
+#include "search_records.hpp"
+
+namespace pbrfit::jobs::brdf {
+namespace {
+
+using Evaluated = BrdfSearchWorkload::Evaluated;
+
+std::string key_of(const gp::SyntaxTree& tree) {
+  ByteWriter out;
+  write_tree(out, tree);
+  const Bytes bytes = out.take();
+  return {reinterpret_cast<const char*>(bytes.data()), bytes.size()};
+}
+
+// Slot s holds distinct tree slot_tree[s]; distinct trees are numbered in order of first appearance.
+struct DistinctTrees {
+  std::vector<std::size_t> first_slot;
+  std::vector<std::size_t> slot_tree;
+};
+
+DistinctTrees distinct(const std::vector<Evaluated>& members) {
+  DistinctTrees out;
+  std::unordered_map<std::string, std::size_t> seen;
+  for (std::size_t s = 0; s < members.size(); ++s) {
+    const auto [at, added] = seen.try_emplace(key_of(members[s].tree), out.first_slot.size());
+    if (added) out.first_slot.push_back(s);
+    out.slot_tree.push_back(at->second);
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<Evaluated> BrdfSearchWorkload::bred_members(std::uint32_t breeding_stage, const ItemResults& kept) const {
+  std::vector<Evaluated> out;
+  for (std::uint64_t i = 0; i < settings_.islands; ++i) {
+    auto record = decode_breed(kept_result(kept, {breeding_stage, i}));
+    for (std::size_t k = 0; k < record.genomes.size(); ++k)
+      out.push_back({std::move(record.genomes[k]), std::move(record.trees[k])});
+  }
+  for (auto& m : out) m.size = double(m.tree.size());
+  return out;
+}
+
+// The distinct trees of the generation bred at stage - 1, for the evaluation stage.
+Bytes BrdfSearchWorkload::stage_context(std::uint32_t stage, const ItemResults& kept) const {
+  if (role({stage, 0}) != Role::evaluation) return {};
+  const auto members = bred_members(stage - 1, kept);
+  ByteWriter out;
+  const auto trees = distinct(members);
+  out.put_varint(trees.first_slot.size());
+  for (const std::size_t s : trees.first_slot) write_tree(out, members[s].tree);
+  return out.take();
+}
+
+std::vector<Evaluated> BrdfSearchWorkload::generation_members(std::uint32_t breeding_stage, const ItemResults& kept) const {
+  auto members = bred_members(breeding_stage - 2, kept);
+  const auto trees = distinct(members);
+  std::vector<double> errors;
+  for (std::uint64_t c = 0; c < chunks(); ++c) {
+    const auto record = decode_evaluation(kept_result(kept, {breeding_stage - 1, c}));
+    errors.insert(errors.end(), record.errors.begin(), record.errors.end());
+  }
+  if (errors.size() != trees.first_slot.size())
+    throw std::logic_error("brdf search: the evaluations do not match the generation's distinct trees");
+  for (std::size_t s = 0; s < members.size(); ++s) members[s].error = errors[trees.slot_tree[s]];
+  return members;
+}
+
+}  // namespace pbrfit::jobs::brdf

@@ -1,0 +1,128 @@
+// The pieces of the brdf_search kind: the paper's material sets, trees as bytes, the metric as the paper
+// defines it (S' = sum of T^2 (f1 - f2)^2 over the kept cells), and the evaluation of one material, on a
+// material tabulated from Cook-Torrance with known parameters.
+#include <catch2/catch_test_macros.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include "pbrfit/brdf/merl_tabulation.hpp"
+#include "pbrfit/core/bytes.hpp"
+#include "pbrfit/gp/expression_parser.hpp"
+#include "pbrfit/jobs/brdf/analytic_brdf.hpp"
+#include "pbrfit/jobs/brdf/brdf_inputs.hpp"
+#include "pbrfit/jobs/brdf/candidate_score.hpp"
+#include "pbrfit/jobs/brdf/material_evaluation.hpp"
+#include "pbrfit/jobs/brdf/material_sets.hpp"
+#include "pbrfit/jobs/brdf/seed_brdfs.hpp"
+#include "pbrfit/jobs/brdf/tree_bytes.hpp"
+#include "pbrfit/render/procedural_environments.hpp"
+
+using namespace pbrfit;
+using namespace pbrfit::jobs::brdf;
+
+namespace {
+
+gp::SyntaxTree tree_of_text(const std::string& text) {
+  const auto p = std::get<gp::ParsedExpression>(gp::parse_expression(text, {brdf_input_names(), brdf_parameter_names()}));
+  return gp::tree_of(p.program, p.parameter_slots);
+}
+
+gp::CompiledTree compiled(const gp::SyntaxTree& tree) { return *gp::compile(tree, brdf_parameter_count); }
+
+const gp::SyntaxTree& cook_torrance() {
+  static const auto tree = tree_of_text(find_seed("cook_torrance")->expression);
+  return tree;
+}
+
+// Per channel: diffuse, specular, roughness, R0.
+const std::vector<std::vector<double>> known = {{0.05, 1.0, 0.3, 0.5}, {0.03, 0.8, 0.3, 0.5}, {0.02, 0.6, 0.3, 0.5}};
+
+const brdf::MerlTable& cook_torrance_material() {
+  static const auto table = brdf::tabulate_on_merl_grid(analytic_brdf(compiled(cook_torrance()), known));
+  return table;
+}
+
+const BrdfScene& small_scene() {
+  static const auto scene = [] {
+    render::SphereSamples samples(render::procedural_interior(), render::SphereView(32), 4);
+    render::PrunedLightTable table{render::LightWeightTable(samples)};
+    return BrdfScene{std::move(samples), std::move(table), {}};
+  }();
+  return scene;
+}
+
+}  // namespace
+
+TEST_CASE("the paper's material sets: 4 training and 16 testing MERL materials each, disjoint") {
+  const std::set<std::string> merl(merl_material_names().begin(), merl_material_names().end());
+  CHECK(merl.size() == 100);
+  std::set<std::string> all;
+  for (const auto* name : {"metals", "dielectrics"}) {
+    const auto set = material_set(name);
+    REQUIRE(set);
+    CHECK(set->training.size() == 4);
+    CHECK(set->testing.size() == 16);
+    for (const auto* list : {&set->training, &set->testing})
+      for (const auto& m : *list) {
+        INFO(m);
+        CHECK(merl.contains(m));
+        CHECK(all.insert(m).second);  // in no other list
+      }
+  }
+  CHECK_FALSE(material_set("plastics"));
+}
+
+TEST_CASE("trees read back from bytes as written; damaged bytes are refused") {
+  ByteWriter out;
+  write_tree(out, cook_torrance());
+  const Bytes bytes = out.bytes();
+  ByteReader in(bytes);
+  CHECK(read_tree(in, brdf_input_count, brdf_parameter_count) == cook_torrance());
+  for (std::size_t cut : {std::size_t{1}, bytes.size() / 2, bytes.size() - 1}) {
+    const Bytes shorter(bytes.begin(), bytes.begin() + std::ptrdiff_t(cut));
+    ByteReader damaged(shorter);
+    CHECK_THROWS_AS(read_tree(damaged, brdf_input_count, brdf_parameter_count), ByteFormatError);
+  }
+  ByteReader fewer_inputs(bytes);
+  CHECK_THROWS_AS(read_tree(fewer_inputs, 2, brdf_parameter_count), ByteFormatError);
+}
+
+TEST_CASE("the metric of a fitted constant is the T^2-weighted spread of the material about its weighted mean") {
+  const MetricData data(small_scene().table, {cook_torrance_material()}, {"ct"});
+  const auto score = score_candidate(compiled(tree_of_text("p0")), data, {3, 200}, RandomStream(1, 0));
+  double expected = 0.0;
+  for (std::size_t c = 0; c < 3; ++c) {
+    const auto& d = data.channel(0, c).data;
+    const double mean = (d.weights * d.target).sum() / d.weights.sum();
+    expected += (d.weights * (d.target - mean).square()).sum();
+  }
+  CHECK(std::abs(score.error * score.error - expected) < 1e-3 * expected);
+  CHECK(score.material_errors.size() == 1);
+}
+
+TEST_CASE("Cook-Torrance fits a material made from Cook-Torrance far better than a constant does") {
+  const MetricData data(small_scene().table, {cook_torrance_material()}, {"ct"});
+  const auto fit = score_candidate(compiled(cook_torrance()), data, {8, 400}, RandomStream(2, 0));
+  const auto constant = score_candidate(compiled(tree_of_text("p0")), data, {3, 200}, RandomStream(2, 0));
+  CHECK(fit.error < 0.05 * constant.error);
+  const auto again = score_candidate(compiled(cook_torrance()), data, {8, 400}, RandomStream(2, 0));
+  CHECK(again.error == fit.error);  // deterministic
+  CHECK(again.parameters == fit.parameters);
+}
+
+TEST_CASE("evaluating a material renders it measured and fitted, and compares the renders") {
+  const std::vector<gp::SyntaxTree> models = {cook_torrance(), tree_of_text("p0")};
+  const auto result = evaluate_on_material(small_scene(), small_scene(), cook_torrance_material(), "ct", models,
+                                           {8, 400}, 1.0, RandomStream(3, 0));
+  REQUIRE(result.models.size() == 2);
+  CHECK(result.renders.size() == 3 * 32 * 32 * 3);
+  const auto& ct = result.models[0];
+  const auto& flat = result.models[1];
+  CHECK(ct.image_l2 < 0.3 * flat.image_l2);
+  CHECK(ct.one_minus_ssim < flat.one_minus_ssim);
+  CHECK(ct.parameters.size() == 3 * brdf_parameter_count);
+  // The measured render and Cook-Torrance's are not black.
+  CHECK(std::any_of(result.renders.begin(), result.renders.begin() + 32 * 32 * 3, [](auto v) { return v > 20; }));
+}
