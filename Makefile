@@ -18,7 +18,8 @@ demo: build
 test: build
 	.ci/install-deps --slurm || echo "pbrfit: the Slurm packages could not be installed; the cluster test will say it is skipped"
 	cd $(BUILD) && { ctest --output-on-failure; status=$$?; \
-	  grep -h "^SKIP:" Testing/Temporary/LastTest.log || true; exit $$status; }
+	  grep -h "^SKIP:" Testing/Temporary/LastTest.log || true; \
+	  awk '/ Testing: /{test=$$0} /^FAIL:/{print test ": " $$0}' Testing/Temporary/LastTest.log; exit $$status; }
 
 bench: build
 	tests/benchmarks/dfg_lut.sh $(BUILD)/pbrfit
