@@ -6,7 +6,7 @@
 // search of 100 generations x 4 islands x 256 genomes on 2 cores.
 // Then the Cook-Torrance fits with that effort and with 32 starts x 1000 evaluations (how far the search's
 // fits are from converged). Defaults: the search scene and fit of jobs/merl-metals.yaml.
-//   bench_brdf_metric [resolution=64] [samples_per_pixel=4] [keep_share=0.999] [starts=4] [evaluations=100]
+//   bench_brdf_metric [resolution=48] [samples_per_pixel=4] [keep_share=0.999] [starts=4] [evaluations=100]
 // Not a test; figures go to docs/BENCHMARKS.md.
 #include <chrono>
 #include <cstdio>
@@ -51,7 +51,7 @@ double evaluations_per_second(const gp::Program& program, const gp::Dataset& dat
 }  // namespace
 
 int main(int argc, char** argv) {
-  const std::size_t resolution = argc > 1 ? std::strtoul(argv[1], nullptr, 10) : 64;
+  const std::size_t resolution = argc > 1 ? std::strtoul(argv[1], nullptr, 10) : 48;
   const std::size_t spp = argc > 2 ? std::strtoul(argv[2], nullptr, 10) : 4;
   const double keep_share = argc > 3 ? std::strtod(argv[3], nullptr) : 0.999;
   const gp::ParameterFitOptions fit{argc > 4 ? std::strtoul(argv[4], nullptr, 10) : 4,

@@ -23,7 +23,7 @@ std::string share_text(double share) {
 spec::Schema scene_schema() {
   spec::Schema s("scene");
   s.string("environment", "interior, sky (built in) or the path of a Radiance .hdr map").defaults_to(std::string("interior"));
-  add_sampling_keys(s, 64, 4);
+  add_sampling_keys(s, 48, 4);
   s.number("keep_share", "the share of the light weight the pruned metric keeps, per channel")
       .range(1e-6, 1.0).defaults_to(0.999);
   return s;
