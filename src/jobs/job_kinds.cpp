@@ -3,6 +3,8 @@
 #include <stdexcept>
 
 #include "pbrfit/jobs/brdf/brdf_search_kind.hpp"
+#include "pbrfit/jobs/ebrdf/ebrdf_kind.hpp"
+#include "pbrfit/jobs/ebrdf/render_kind.hpp"
 #include "pbrfit/jobs/lut/lut_kind.hpp"
 #include "pbrfit/jobs/sweep/sweep_kind.hpp"
 #include "pbrfit/jobs/symreg/symreg_kind.hpp"
@@ -11,7 +13,8 @@ namespace pbrfit::jobs {
 
 const std::vector<JobKind>& job_kinds() {
   static const std::vector<JobKind> kinds = {lut::lut_kind(), sweep::sweep_kind(), symreg::symreg_kind(),
-                                              brdf::brdf_search_kind()};
+                                              brdf::brdf_search_kind(), ebrdf::ebrdf_kind(),
+                                              ebrdf::ebrdf_render_kind()};
   return kinds;
 }
 

@@ -38,10 +38,10 @@ optimize::NelderMeadOptions default_anisotropic_search() {
   return options;
 }
 
-AnisotropicFit fit_ltc_to_samples(std::span<const Vector3> targets, double amplitude,
-                                  const AnisotropicFitOptions& options) {
-  const Matrix3 start = moment_matched_ltc(targets);
-  SlicedWasserstein loss(targets, options.axes);
+namespace {
+
+AnisotropicFit search_from(SlicedWasserstein& loss, const Matrix3& start, double amplitude,
+                           const AnisotropicFitOptions& options) {
   const optimize::Objective objective = [&](std::span<const double> p) {
     const Matrix3 c = correction(p);
     if (std::abs(c.determinant()) < min_correction_determinant) return std::numeric_limits<double>::infinity();
@@ -60,6 +60,23 @@ AnisotropicFit fit_ltc_to_samples(std::span<const Vector3> targets, double ampli
   fit.evaluations = search.evaluations;
   fit.stop = search.stop;
   return fit;
+}
+
+}  // namespace
+
+AnisotropicFit fit_ltc_to_samples(std::span<const Vector3> targets, double amplitude,
+                                  const AnisotropicFitOptions& options) {
+  SlicedWasserstein loss(targets, options.axes);
+  return search_from(loss, moment_matched_ltc(targets), amplitude, options);
+}
+
+AnisotropicFit fit_ltc_to_samples(std::span<const Vector3> targets, double amplitude, const Matrix3& warm_start,
+                                  const AnisotropicFitOptions& options) {
+  SlicedWasserstein loss(targets, options.axes);
+  const Matrix3 matched = moment_matched_ltc(targets);
+  const bool warm_usable = warm_start.allFinite() && std::abs(warm_start.determinant()) > 1e-12;
+  const bool warm_better = warm_usable && loss.distance(warm_start) < loss.distance(matched);
+  return search_from(loss, warm_better ? warm_start : matched, amplitude, options);
 }
 
 }  // namespace pbrfit::ltc

@@ -30,6 +30,8 @@ SlicedWasserstein::SlicedWasserstein(std::span<const Vector3> targets, std::vect
   transformed_.resize(n);
   lengths_.resize(n);
   projections_.resize(n);
+  signed_axes_.resize(n);
+  signed_projections_.resize(n);
   orders_.resize(axes_.size() * n);
   ordered_.assign(axes_.size(), false);
   for (std::size_t p = 0; p < axes_.size(); ++p) std::iota(order(p), order(p) + n, std::size_t{0});
@@ -80,7 +82,10 @@ double SlicedWasserstein::distance(const Matrix3& m) {
 double SlicedWasserstein::gradient(const Matrix3& m, Matrix3& gradient) {
   transform_base(m);
   const std::size_t n = base_.size();
-  gradient.setZero();
+  // d(axis . w_k) / dM = ((axis - w_k (w_k . axis)) / |M s_k|) s_k^T, w_k = normalize(M s_k); summed over the
+  // axes with signs first: sum_p sign_pk (axis_p - w_k proj_pk) = signed_axes_k - w_k signed_projections_k.
+  std::fill(signed_axes_.begin(), signed_axes_.end(), Vector3::Zero());
+  std::fill(signed_projections_.begin(), signed_projections_.end(), 0.0);
   double total = 0.0;
   for (std::size_t p = 0; p < axes_.size(); ++p) {
     const Vector3& axis = axes_[p];
@@ -88,15 +93,19 @@ double SlicedWasserstein::gradient(const Matrix3& m, Matrix3& gradient) {
     const std::size_t* ranked = order(p);
     const double* targets = sorted_targets_.data() + p * n;
     for (std::size_t i = 0; i < n; ++i) {
-      const std::size_t k = ranked[i];
       const double difference = projections_[i] - targets[i];
       total += std::abs(difference);
       if (difference == 0.0) continue;
-      const Vector3& w = transformed_[k];
-      // d(axis . normalize(M s)) / dM = ((axis - w (w . axis)) / |M s|) s^T
-      const Vector3 direction = (axis - w * w.dot(axis)) * (std::copysign(1.0, difference) / lengths_[k]);
-      gradient += direction * base_[k].transpose();
+      const std::size_t k = ranked[i];
+      const double sign = std::copysign(1.0, difference);
+      signed_axes_[k] += sign * axis;
+      signed_projections_[k] += sign * projections_[i];
     }
+  }
+  gradient.setZero();
+  for (std::size_t k = 0; k < n; ++k) {
+    const Vector3 direction = (signed_axes_[k] - transformed_[k] * signed_projections_[k]) / lengths_[k];
+    gradient += direction * base_[k].transpose();
   }
   const double scale = 1.0 / static_cast<double>(n * axes_.size());
   gradient *= scale;

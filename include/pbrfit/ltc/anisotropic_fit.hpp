@@ -39,4 +39,9 @@ struct AnisotropicFit {
 AnisotropicFit fit_ltc_to_samples(std::span<const Vector3> targets, double amplitude,
                                   const AnisotropicFitOptions& options);
 
+// The same search from the better (by SW) of the moment-matched start and `warm_start` (an invertible
+// matrix, typically a neighbouring view's fit); `start_distance` is SW at the start used.
+AnisotropicFit fit_ltc_to_samples(std::span<const Vector3> targets, double amplitude, const Matrix3& warm_start,
+                                  const AnisotropicFitOptions& options);
+
 }  // namespace pbrfit::ltc

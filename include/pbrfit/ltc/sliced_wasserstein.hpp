@@ -46,6 +46,8 @@ class SlicedWasserstein {
   std::vector<Vector3> transformed_;    // normalize(M s_k)
   std::vector<double> lengths_;         // |M s_k|
   std::vector<double> projections_;     // sorted projections on the current axis
+  std::vector<Vector3> signed_axes_;    // gradient(): per sample, sum over axes of sign * axis
+  std::vector<double> signed_projections_;  // gradient(): per sample, sum over axes of sign * projection
   std::vector<std::size_t> orders_;     // [axis][rank]: sample indices by projection, from the last call
   std::vector<bool> ordered_;           // per axis: whether orders_ comes from a previous call
 };

@@ -49,10 +49,10 @@ TEST_CASE("every bad job file is rejected with its exact one-line message") {
   }
 }
 
-// A shipped job may read the result of another shipped job (symbolic regression of a LUT): before that job
-// has run, the only acceptable refusal is that its result is not there yet.
+// A shipped job may read the result of another shipped job (symbolic regression of a LUT, renders of
+// prefiltered tables): before that job has run, the only acceptable refusal is that its result is not there yet.
 bool waits_for_shipped_result(const std::string& message, const std::set<std::string>& shipped_outputs) {
-  const std::string marker = "'result' names ";
+  const std::string marker = "' names ";
   const auto at = message.find(marker);
   if (at == std::string::npos) return false;
   const auto start = at + marker.size(), end = message.find(": cannot read file: No such file", start);

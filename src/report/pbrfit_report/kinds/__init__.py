@@ -20,3 +20,4 @@ def renderer_for(kind):
 from . import lut  # noqa: E402,F401 - registers itself
 from . import symreg  # noqa: E402,F401 - registers itself
 from . import brdf_search  # noqa: E402,F401 - registers itself
+from . import ebrdf  # noqa: E402,F401 - registers itself

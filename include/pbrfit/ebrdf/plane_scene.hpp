@@ -1,0 +1,39 @@
+#pragma once
+// The scenes of Nahmias 2022, chapter 4: an infinite plane z = 0 carrying the normal map tiled once per
+// world unit (texture coordinates u = x, v = y), lit by one rectangular area light, seen by a pinhole camera
+// at a distance h. Everything scales with h, so the images look alike and only the texels per pixel change:
+//  - top: the camera at height h looks straight down (+y up in the image); the light, a horizontal
+//    rectangle of half-size 0.15 h at height 0.8 h offset by 0.1 h along x, shows its reflection;
+//  - grazing: the camera at height 0.25 h looks at the plane's point h ahead (about 14 degrees above the
+//    plane); the light, a vertical rectangle facing the camera, 0.3 h by 0.1 h, stands 0.8 h beyond.
+// The light is not drawn and casts no shadow; it shines on both sides.
+//
+// Invariants: ray(column, row) is the unit direction through the pixel position (column, row) (pixel
+// centres at + 0.5, row 0 at the top); plane_hit is nullopt for rays that miss the plane.
+#include <array>
+#include <cstddef>
+#include <optional>
+#include <string>
+
+#include "pbrfit/ltc/vector.hpp"
+
+namespace pbrfit::ebrdf {
+
+enum class SceneView { top, grazing };
+
+struct PlaneScene {
+  ltc::Vector3 camera;
+  ltc::Vector3 forward, right, up;  // orthonormal camera frame
+  double tan_half_fov = 0.2679;      // 30 degrees vertical
+  std::size_t resolution = 128;
+  std::array<ltc::Vector3, 4> light;  // vertices in order around the rectangle
+
+  ltc::Vector3 ray(double column, double row) const;
+  // The point where the ray through (column, row) meets the plane.
+  std::optional<ltc::Vector3> plane_hit(double column, double row) const;
+};
+
+PlaneScene make_plane_scene(SceneView view, double distance, std::size_t resolution);
+const char* scene_view_name(SceneView view);
+
+}  // namespace pbrfit::ebrdf

@@ -1,0 +1,27 @@
+#pragma once
+// The tabulated view directions of an eBRDF table, in the geometric frame (z = the geometric normal):
+// n_theta elevations theta_i = i / (n_theta - 1) * 0.999 * pi / 2 (0.1 when n_theta = 1; Nahmias 2022,
+// section 3.4.1) and n_phi azimuths phi_j = 2 pi j / n_phi over the whole circle (the thesis repeats 0 as
+// 2 pi; here each azimuth is distinct and the table wraps).
+//
+// Invariants: view index = i * n_phi + j; direction() is a unit vector with z > 0.
+#include <cstddef>
+
+#include "pbrfit/ltc/vector.hpp"
+
+namespace pbrfit::ebrdf {
+
+struct ViewGrid {
+  std::size_t n_theta = 8;
+  std::size_t n_phi = 16;
+
+  std::size_t count() const { return n_theta * n_phi; }
+  double theta(std::size_t i) const;
+  double phi(std::size_t j) const;
+  ltc::Vector3 direction(std::size_t view) const;
+};
+
+// w rotated about z by -phi: the frame in which a view of azimuth phi has azimuth 0.
+ltc::Vector3 rotate_azimuth_to_zero(const ltc::Vector3& w, double phi);
+
+}  // namespace pbrfit::ebrdf

@@ -1,0 +1,53 @@
+#pragma once
+// Job kind `ebrdf_render` as a workload: the comparison of Nahmias 2022, chapter 4, for a finished `ebrdf`
+// result. One item per (scene, distance): the plane rendered by the ground truth, the naive mip-mapped
+// normals and the prefiltered LTCs (ebrdf/plane_renderer.hpp), stored as sRGB display images, with each
+// method's MSE against the ground truth over the pixels that see the plane (display values in [0, 1]) and
+// the texels per pixel at the image centre. The layout is docs/results-ebrdf.md.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "pbrfit/ebrdf/ggx_ltc_curve.hpp"
+#include "pbrfit/ebrdf/plane_renderer.hpp"
+#include "pbrfit/jobs/ebrdf/prefiltered_tables.hpp"
+#include "pbrfit/runtime/workload.hpp"
+
+namespace pbrfit::jobs::ebrdf {
+
+struct RenderSettings {
+  std::string tables_path;
+  std::shared_ptr<const PrefilteredTables> tables;
+  std::vector<pbrfit::ebrdf::SceneView> scenes;
+  std::vector<double> distances;
+  std::size_t resolution = 128;
+  pbrfit::ebrdf::Shading shading;
+  double exposure = 1.0;
+};
+
+class RenderWorkload final : public runtime::Workload {
+ public:
+  explicit RenderWorkload(RenderSettings settings);
+
+  store::ResultLayout layout() const override;
+  std::uint64_t item_count(std::uint32_t) const override { return settings_.scenes.size() * settings_.distances.size(); }
+  Bytes compute(const runtime::ItemTask& task) const override;
+  std::vector<store::Block> blocks(WorkItemId id, const Bytes& result) const override;
+  void fold_summary(Bytes& summary, WorkItemId id, const Bytes& result) const override;
+  std::string headline(const Bytes& summary) const override;
+
+ private:
+  struct Rendered {
+    std::vector<std::uint8_t> display;  // [method][row][column][3]
+    double naive_mse = 0.0, ours_mse = 0.0, texels_per_pixel = 0.0;
+  };
+  struct Summary {
+    std::uint64_t images = 0, ours_better = 0, compared = 0;  // compared: images with >= 2 texels per pixel
+  };
+  Rendered decode(const Bytes& bytes) const;
+
+  RenderSettings settings_;
+  pbrfit::ebrdf::GgxLtcCurve base_ltc_;
+};
+
+}  // namespace pbrfit::jobs::ebrdf

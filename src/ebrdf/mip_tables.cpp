@@ -1,0 +1,78 @@
+#include "pbrfit/ebrdf/mip_tables.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+namespace pbrfit::ebrdf {
+namespace {
+
+// The two grid points around a continuous index and the weight of the upper one.
+struct Bracket {
+  std::size_t low, high;
+  double t;
+};
+
+Bracket wrapped(double position, std::size_t n) {
+  const double f = std::floor(position);
+  const auto i = static_cast<std::int64_t>(f);
+  const auto side = static_cast<std::int64_t>(n);
+  const auto wrap = [side](std::int64_t k) { return std::size_t(((k % side) + side) % side); };
+  return {wrap(i), wrap(i + 1), position - f};
+}
+
+Bracket clamped(double position, std::size_t n) {
+  const double p = std::clamp(position, 0.0, double(n - 1));
+  const auto low = std::min(n - 1, static_cast<std::size_t>(p));
+  return {low, std::min(n - 1, low + 1), p - double(low)};
+}
+
+Bracket theta_bracket(const ViewGrid& views, double theta) {
+  if (views.n_theta == 1) return {0, 0, 0.0};
+  return clamped(theta / views.theta(views.n_theta - 1) * double(views.n_theta - 1), views.n_theta);
+}
+
+}  // namespace
+
+LtcMipTables::LtcMipTables(ViewGrid views, std::vector<LtcLevel> levels) : views_(views), levels_(std::move(levels)) {
+  if (levels_.empty()) throw std::invalid_argument("ebrdf: an LTC mip hierarchy needs at least one level");
+  for (const auto& level : levels_) {
+    const std::size_t entries = level.side * level.side * views_.count();
+    if (level.matrices.size() != 9 * entries || level.amplitudes.size() != entries)
+      throw std::invalid_argument("ebrdf: an LTC level's tables do not match its size and views");
+  }
+}
+
+void LtcMipTables::accumulate(std::size_t level, double u, double v, double theta, double phi, double weight,
+                              LtcLookup& sum) const {
+  const LtcLevel& table = levels_[level];
+  const Bracket x = wrapped(u * double(table.side) - 0.5, table.side);
+  const Bracket y = wrapped(v * double(table.side) - 0.5, table.side);
+  const Bracket t = theta_bracket(views_, theta);
+  const Bracket p = wrapped(phi / (2.0 * std::numbers::pi) * double(views_.n_phi), views_.n_phi);
+  for (int corner = 0; corner < 16; ++corner) {
+    const double w = weight * ((corner & 1) ? x.t : 1 - x.t) * ((corner & 2) ? y.t : 1 - y.t) *
+                     ((corner & 4) ? t.t : 1 - t.t) * ((corner & 8) ? p.t : 1 - p.t);
+    if (w == 0.0) continue;
+    const std::size_t texel = ((corner & 2) ? y.high : y.low) * table.side + ((corner & 1) ? x.high : x.low);
+    const std::size_t view = ((corner & 4) ? t.high : t.low) * views_.n_phi + ((corner & 8) ? p.high : p.low);
+    const std::size_t entry = texel * views_.count() + view;
+    const float* m = table.matrices.data() + 9 * entry;
+    for (int k = 0; k < 9; ++k) sum.matrix(k / 3, k % 3) += w * m[k];
+    sum.amplitude += w * table.amplitudes[entry];
+  }
+}
+
+LtcLookup LtcMipTables::lookup(double level, double u, double v, double theta, double phi) const {
+  const double l = std::clamp(level, 1.0, double(levels_.size()));
+  const auto low = std::min(levels_.size(), static_cast<std::size_t>(l));
+  const double t = l - double(low);
+  LtcLookup sum;
+  sum.matrix.setZero();
+  accumulate(low - 1, u, v, theta, phi, 1.0 - t, sum);
+  if (t > 0.0 && low < levels_.size()) accumulate(low, u, v, theta, phi, t, sum);
+  return sum;
+}
+
+}  // namespace pbrfit::ebrdf

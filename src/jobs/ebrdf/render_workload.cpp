@@ -1,0 +1,143 @@
+#include "pbrfit/jobs/ebrdf/render_workload.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "pbrfit/core/error.hpp"
+
+namespace pbrfit::jobs::ebrdf {
+namespace {
+
+namespace eb = pbrfit::ebrdf;
+
+constexpr eb::RenderMethod methods[] = {eb::RenderMethod::ground_truth, eb::RenderMethod::naive,
+                                        eb::RenderMethod::ours};
+
+double display(float linear, double exposure) {
+  return std::pow(std::clamp(double(linear) * exposure, 0.0, 1.0), 1.0 / 2.2);
+}
+
+// MSE of the display values over the pixels that see the plane.
+double display_mse(const RgbImage& image, const RgbImage& truth, const eb::PlaneScene& scene, double exposure) {
+  double sum = 0.0;
+  std::size_t count = 0;
+  for (std::size_t row = 0; row < scene.resolution; ++row)
+    for (std::size_t column = 0; column < scene.resolution; ++column) {
+      if (!scene.plane_hit(double(column) + 0.5, double(row) + 0.5)) continue;
+      const double d = display(image.pixel(column, row)[0], exposure) - display(truth.pixel(column, row)[0], exposure);
+      sum += d * d;
+      ++count;
+    }
+  return count ? sum / double(count) : 0.0;
+}
+
+}  // namespace
+
+RenderWorkload::RenderWorkload(RenderSettings settings)
+    : settings_(std::move(settings)), base_ltc_(settings_.tables->alpha) {}
+
+Bytes RenderWorkload::compute(const runtime::ItemTask& task) const {
+  const std::size_t scene_index = task.id.item / settings_.distances.size();
+  const double distance = settings_.distances[task.id.item % settings_.distances.size()];
+  const eb::PlaneScene scene = eb::make_plane_scene(settings_.scenes[scene_index], distance, settings_.resolution);
+  const PrefilteredTables& t = *settings_.tables;
+  const eb::RenderInputs inputs{t.map.get(), &base_ltc_, &*t.specular, &*t.diffuse, settings_.shading};
+  std::vector<RgbImage> images;
+  for (const auto method : methods) {
+    if (task.stop_requested()) throw runtime::Cancelled();
+    images.push_back(eb::render_plane(scene, method, inputs));
+  }
+  ByteWriter out;
+  std::vector<std::uint8_t> pixels;
+  for (const RgbImage& image : images)
+    for (float v : image.values()) pixels.push_back(std::uint8_t(std::lround(255.0 * display(v, settings_.exposure))));
+  out.put_array(std::span<const std::uint8_t>(pixels));
+  out.put(display_mse(images[1], images[0], scene, settings_.exposure));
+  out.put(display_mse(images[2], images[0], scene, settings_.exposure));
+  out.put(eb::centre_texels_per_pixel(scene, t.map->size()));
+  return out.take();
+}
+
+RenderWorkload::Rendered RenderWorkload::decode(const Bytes& bytes) const {
+  ByteReader in(bytes);
+  Rendered r;
+  r.display = in.get_array<std::uint8_t>();
+  if (r.display.size() != 3 * settings_.resolution * settings_.resolution * 3)
+    throw RunError("ebrdf_render: a rendered item has the wrong size");
+  r.naive_mse = in.get<double>();
+  r.ours_mse = in.get<double>();
+  r.texels_per_pixel = in.get<double>();
+  return r;
+}
+
+std::vector<store::Block> RenderWorkload::blocks(WorkItemId id, const Bytes& result) const {
+  const Rendered r = decode(result);
+  const std::uint64_t scene = id.item / settings_.distances.size(), distance = id.item % settings_.distances.size();
+  const std::uint64_t n = settings_.resolution;
+  store::Block renders{"ebrdf_render", "renders", {scene, distance, 0, 0, 0, 0}, {1, 1, 3, n, n, 3}};
+  renders.values.assign(r.display.begin(), r.display.end());
+  return {std::move(renders),
+          {"ebrdf_render", "mse", {scene, distance, 0}, {1, 1, 2}, {r.naive_mse, r.ours_mse}},
+          {"ebrdf_render", "texels_per_pixel", {scene, distance}, {1, 1}, {r.texels_per_pixel}}};
+}
+
+void RenderWorkload::fold_summary(Bytes& summary, WorkItemId, const Bytes& result) const {
+  auto sum = runtime::summary_as<Summary>(summary);
+  const Rendered r = decode(result);
+  ++sum.images;
+  if (r.texels_per_pixel >= 2.0) {
+    ++sum.compared;
+    sum.ours_better += r.ours_mse < r.naive_mse;
+  }
+  runtime::store_summary(summary, sum);
+}
+
+std::string RenderWorkload::headline(const Bytes& summary) const {
+  const auto sum = runtime::summary_as<Summary>(summary);
+  char text[160];
+  std::snprintf(text, sizeof text, "%llu scene views rendered; prefiltered below naive in %llu of %llu with >= 2 texels per pixel",
+                static_cast<unsigned long long>(sum.images), static_cast<unsigned long long>(sum.ours_better),
+                static_cast<unsigned long long>(sum.compared));
+  return text;
+}
+
+store::ResultLayout RenderWorkload::layout() const {
+  store::Group g;
+  g.name = "ebrdf_render";
+  g.description = "a normal-mapped plane under a rectangular light (Nahmias 2022, chapter 4): ground truth "
+                  "(supersampled MIP-0 texels), naive (mip-mapped normals) and ours (prefiltered LTCs)";
+  char shading[200];
+  std::snprintf(shading, sizeof shading, "light radiance %g; specular %g (GGX alpha %g) + diffuse %g (Lambert); exposure %g",
+                settings_.shading.light_radiance, settings_.shading.specular, settings_.tables->alpha,
+                settings_.shading.diffuse, settings_.exposure);
+  std::vector<double> scenes(settings_.scenes.size());
+  std::string scene_names;
+  for (std::size_t i = 0; i < scenes.size(); ++i) {
+    scenes[i] = double(i);
+    scene_names += (i ? ", " : "") + std::string(eb::scene_view_name(settings_.scenes[i]));
+  }
+  g.attributes = {{"tables", settings_.tables_path}, {"scenes", scene_names}, {"shading", shading},
+                  {"methods", "ground_truth, naive, ours"},
+                  {"mse", "mean squared difference of the sRGB display values in [0, 1] from the ground truth, over the "
+                          "pixels that see the plane"}};
+  const std::size_t n = settings_.resolution;
+  std::vector<double> rows(n), methods_axis = {0, 1, 2}, compared = {0, 1}, channels = {0, 1, 2};
+  for (std::size_t i = 0; i < n; ++i) rows[i] = double(i);
+  g.axes = {{"scene", scenes, "scene index: " + scene_names},
+            {"distance", settings_.distances, "camera distance h (the map tiles once per world unit)"},
+            {"method", methods_axis, "0 ground_truth, 1 naive, 2 ours"},
+            {"compared", compared, "0 naive, 1 ours"},
+            {"row", rows, "pixel row, 0 at the top"},
+            {"column", rows, "pixel column"},
+            {"channel", channels, "R, G, B"}};
+  store::Table renders{"renders", {"scene", "distance", "method", "row", "column", "channel"},
+                       "sRGB display renders of each method", store::ValueType::u8};
+  renders.chunk = {1, 1, 3, n, n, 3};
+  g.tables = {renders,
+              {"mse", {"scene", "distance", "compared"}, "MSE against the ground truth: naive, ours"},
+              {"texels_per_pixel", {"scene", "distance"}, "texels per pixel at the image centre"}};
+  return {{g}};
+}
+
+}  // namespace pbrfit::jobs::ebrdf

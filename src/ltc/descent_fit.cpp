@@ -1,0 +1,66 @@
+#include "pbrfit/ltc/descent_fit.hpp"
+
+#include <cmath>
+
+#include "pbrfit/ltc/moment_matching.hpp"
+#include "pbrfit/ltc/sliced_wasserstein.hpp"
+
+namespace pbrfit::ltc {
+namespace {
+
+constexpr double step_growth = 1.3;
+constexpr double step_shrink = 0.5;
+
+bool usable(const Matrix3& m) { return m.allFinite() && std::abs(m.determinant()) > 1e-12; }
+
+}  // namespace
+
+AnisotropicFit fit_ltc_by_descent(std::span<const Vector3> targets, double amplitude, const Matrix3* warm_start,
+                                  const DescentFitOptions& options) {
+  SlicedWasserstein loss(targets, options.axes);
+  AnisotropicFit fit;
+  fit.amplitude = amplitude;
+  Matrix3 m = moment_matched_ltc(targets);
+  m /= m.norm();
+  Matrix3 gradient;
+  double value = loss.gradient(m, gradient);
+  fit.evaluations = 1;
+  if (warm_start && usable(*warm_start)) {
+    const Matrix3 warm = *warm_start / warm_start->norm();
+    Matrix3 warm_gradient;
+    const double warm_value = loss.gradient(warm, warm_gradient);
+    ++fit.evaluations;
+    if (warm_value < value) {
+      m = warm;
+      value = warm_value;
+      gradient = warm_gradient;
+    }
+  }
+  fit.start_distance = value;
+  double step = options.initial_step;
+  Matrix3 trial_gradient;
+  for (std::size_t i = 0; i < options.iterations; ++i) {
+    const Matrix3 trial = m - step * gradient;
+    ++fit.evaluations;
+    if (!usable(trial)) {
+      step *= step_shrink;
+      continue;
+    }
+    const double trial_value = loss.gradient(trial, trial_gradient);
+    if (trial_value < value) {
+      const double norm = trial.norm();
+      m = trial / norm;
+      gradient = trial_gradient * norm;  // d SW / dM at M / c is c times that at M
+      value = trial_value;
+      step *= step_growth;
+    } else {
+      step *= step_shrink;
+    }
+  }
+  fit.matrix = m;
+  fit.distance = value;
+  fit.stop = optimize::StopReason::budget;
+  return fit;
+}
+
+}  // namespace pbrfit::ltc

@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# eBRDF prefiltering stopped by SIGTERM (exit 75) and killed by SIGKILL, resumed each time (once on another
+# rank count), ends bitwise identical to an uninterrupted run; tiles already in the result stay written.
+source "$(dirname "$0")/lib/common.bash"
+
+job_from tests/jobs/small-ebrdf.yaml job.yaml 's/^  size: 16/  size: 64/' 's/^  tile: 4/  tile: 2/' \
+  's/^output: result.h5/output: result.h5\ncheckpoint: {interval_seconds: 0.2, interval_items: 20}/'
+note "uninterrupted reference on 2 ranks"
+run_ranks 2 run job.yaml --output reference.h5 -q
+expect_status 0
+total=$("$PBRFIT" status reference.h5 | sed -n 's/^progress: *[0-9]* of \([0-9]*\).*/\1/p')
+
+note "SIGTERM early in the specular levels"
+interrupt_after 100 TERM 2 run job.yaml -q
+note "resume on 1 rank, then SIGKILL"
+interrupt_after $(($(items_done result.h5) + 200)) KILL 1 run job.yaml --resume -q
+note "resume on 2 ranks, SIGTERM in the diffuse levels"
+interrupt_after $((total - 250)) TERM 2 run job.yaml --resume -q
+
+note "resume to completion on 2 ranks"
+run_ranks 2 run job.yaml --resume -q
+expect_status 0
+expect_identical reference.h5 result.h5 /ebrdf
+echo "PASS"
