@@ -5,7 +5,7 @@ MPIRUN ?= mpirun
 # memory only (no probing for network transports) saves about 0.2 s of start-up on one machine.
 MPIRUN_FLAGS ?= $(if $(filter 0,$(shell id -u)),--allow-run-as-root,) --oversubscribe --mca pml ob1 --mca btl self,vader
 
-.PHONY: demo test build deps bench bench-brdf soak clean
+.PHONY: demo test build deps bench bench-brdf bench-ebrdf soak clean
 
 demo: build
 	$(MPIRUN) $(MPIRUN_FLAGS) -np 2 $(BUILD)/pbrfit run jobs/quickstart.yaml
@@ -33,6 +33,11 @@ bench-brdf: build
 	$(BUILD)/tests/bench_brdf_metric
 	tests/benchmarks/brdf_search_benchmark.sh $(BUILD)/pbrfit jobs/merl-metals.yaml
 	tests/benchmarks/brdf_search_benchmark.sh $(BUILD)/pbrfit jobs/merl-dielectrics.yaml
+
+# eBRDF prefiltering of the three built-in maps, their renders, the SGD comparison and a 512 x 512 scale run
+# (about 45 minutes on 2 cores).
+bench-ebrdf: build
+	tests/benchmarks/ebrdf_benchmark.sh $(BUILD)
 
 # Fault injection, 20 rounds of each fault (about 15 minutes; not part of test). Figures: docs/RELIABILITY.md.
 soak: build

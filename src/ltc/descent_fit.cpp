@@ -1,6 +1,8 @@
 #include "pbrfit/ltc/descent_fit.hpp"
 
 #include <cmath>
+#include <limits>
+#include <vector>
 
 #include "pbrfit/ltc/moment_matching.hpp"
 #include "pbrfit/ltc/sliced_wasserstein.hpp"
@@ -20,20 +22,21 @@ AnisotropicFit fit_ltc_by_descent(std::span<const Vector3> targets, double ampli
   SlicedWasserstein loss(targets, options.axes);
   AnisotropicFit fit;
   fit.amplitude = amplitude;
-  Matrix3 m = moment_matched_ltc(targets);
-  m /= m.norm();
-  Matrix3 gradient;
-  double value = loss.gradient(m, gradient);
-  fit.evaluations = 1;
-  if (warm_start && usable(*warm_start)) {
-    const Matrix3 warm = *warm_start / warm_start->norm();
-    Matrix3 warm_gradient;
-    const double warm_value = loss.gradient(warm, warm_gradient);
+  // Candidate starts: the moment-matched LTC, the cosine itself (the SGD baseline's start) and the warm start;
+  // the descent begins at the one with the lowest distance (the first on ties).
+  std::vector<Matrix3> starts = {moment_matched_ltc(targets), Matrix3::Identity()};
+  if (warm_start && usable(*warm_start)) starts.push_back(*warm_start);
+  Matrix3 m = Matrix3::Identity(), gradient = Matrix3::Zero(), candidate_gradient;
+  double value = std::numeric_limits<double>::infinity();
+  for (const Matrix3& start : starts) {
+    if (!usable(start)) continue;
+    const Matrix3 candidate = start / start.norm();
+    const double candidate_value = loss.gradient(candidate, candidate_gradient);
     ++fit.evaluations;
-    if (warm_value < value) {
-      m = warm;
-      value = warm_value;
-      gradient = warm_gradient;
+    if (candidate_value < value) {
+      m = candidate;
+      value = candidate_value;
+      gradient = candidate_gradient;
     }
   }
   fit.start_distance = value;

@@ -3,7 +3,7 @@
 // mip level, a fixed pseudo-random set of (texel, view) effective BRDFs is fitted by `descent` (the default)
 // and by `sgd`, both judged by the same 32-axis sliced Wasserstein error. Prints per level the mean errors,
 // the share of fits where descent's error is at most SGD's, and the time per fit.
-// Usage: bench_ebrdf_fit [fits per level = 64]
+// Usage: bench_ebrdf_fit [fits per level = 64] [descent iterations] [descent axes] (default: the job defaults)
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -36,11 +36,11 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-Tally fit_level(const FootprintSampler& sampler, std::size_t level, int count) {
+Tally fit_level(const FootprintSampler& sampler, std::size_t level, int count, const EbrdfFitSettings& descent) {
   const std::size_t side = mip_side(128, level);
   const std::size_t views = sampler.sampling().views.count();
   pbrfit::RandomStream pick(5, level);
-  EbrdfFitSettings descent, sgd;
+  EbrdfFitSettings sgd;
   sgd.method = FitMethod::sgd;
   Tally t;
   for (int k = 0; k < count; ++k) {
@@ -66,6 +66,10 @@ Tally fit_level(const FootprintSampler& sampler, std::size_t level, int count) {
 
 int main(int argc, char** argv) {
   const int count = argc > 1 ? std::atoi(argv[1]) : 64;
+  EbrdfFitSettings descent;
+  if (argc > 2) descent.descent.iterations = std::size_t(std::atoi(argv[2]));
+  if (argc > 3) descent.descent.axes = std::size_t(std::atoi(argv[3]));
+  std::printf("descent: %zu iterations, %zu axes\n\n", descent.descent.iterations, descent.descent.axes);
   std::printf("| map | level | fits | descent error | SGD error | descent <= SGD | descent ms/fit | SGD ms/fit |\n");
   std::printf("|---|---|---|---|---|---|---|---|\n");
   Tally all;
@@ -76,7 +80,7 @@ int main(int argc, char** argv) {
     const FootprintSampler sampler(map, sampling, albedo);
     Tally per_map;
     for (std::size_t level = 1; level <= 7; ++level) {
-      const Tally t = fit_level(sampler, level, count);
+      const Tally t = fit_level(sampler, level, count, descent);
       t.print(name.c_str(), std::to_string(level).c_str());
       per_map.add(t);
     }

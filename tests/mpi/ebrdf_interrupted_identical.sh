@@ -3,7 +3,7 @@
 # rank count), ends bitwise identical to an uninterrupted run; tiles already in the result stay written.
 source "$(dirname "$0")/lib/common.bash"
 
-job_from tests/jobs/small-ebrdf.yaml job.yaml 's/^  size: 16/  size: 64/' 's/^  tile: 4/  tile: 2/' \
+job_from tests/jobs/small-ebrdf.yaml job.yaml 's/^  size: 16/  size: 64/' 's/^  tile: 4/  tile: 2/' 's/^  diffuse_views: \[2, 4\]/  diffuse_views: [4, 8]/' \
   's/^output: result.h5/output: result.h5\ncheckpoint: {interval_seconds: 0.2, interval_items: 20}/'
 note "uninterrupted reference on 2 ranks"
 run_ranks 2 run job.yaml --output reference.h5 -q

@@ -1,12 +1,13 @@
 #pragma once
 // A fast deterministic fit of a full 3 x 3 LTC to a set of directions: gradient descent on the sliced
 // Wasserstein distance (sliced_wasserstein.hpp: fixed axes and base samples, analytic gradient), from the
-// better of the moment-matched start (moment_matching.hpp) and an optional warm start.
+// best of the moment-matched start (moment_matching.hpp), the identity (the cosine) and an optional warm
+// start.
 // SW is scale-invariant, so its gradient is orthogonal to M: each accepted step is followed by a
 // rescale to unit Frobenius norm, which keeps step sizes meaningful. The step adapts: x1.3 after an
 // accepted step (the trial lowered SW), x0.5 after a rejected one.
 //
-// Contract: deterministic; exactly 1 + iterations gradient evaluations (+1 for a warm start); `distance`
+// Contract: deterministic; 2 + iterations gradient evaluations (+1 for a warm start); `distance`
 // never exceeds `start_distance`; the matrix has unit Frobenius norm.
 #include <cstddef>
 #include <span>
@@ -17,8 +18,8 @@
 namespace pbrfit::ltc {
 
 struct DescentFitOptions {
-  std::size_t axes = 8;
-  std::size_t iterations = 40;
+  std::size_t axes = 12;
+  std::size_t iterations = 30;
   double initial_step = 0.5;
 };
 

@@ -29,10 +29,10 @@ spec::Schema ebrdf_schema() {
            "descent: gradient descent on the sliced Wasserstein distance from moment matching; nelder_mead: the "
            "fitting engine's Nelder-Mead from the same start; sgd: the thesis' baseline, SGD from the identity")
       .defaults_to(std::string("descent"));
-  s.integer("iterations", "descent: gradient steps per fit").range(0, 100'000).defaults_to(std::int64_t{40});
+  s.integer("iterations", "descent: gradient steps per fit").range(0, 100'000).defaults_to(std::int64_t{30});
   s.integer("axes", "descent, nelder_mead: projection axes of the search's sliced Wasserstein distance")
       .range(1, 1024)
-      .defaults_to(std::int64_t{8});
+      .defaults_to(std::int64_t{12});
   s.integer("max_evaluations", "nelder_mead: distance evaluations per fit").range(10, 10'000'000).defaults_to(std::int64_t{400});
   s.integer("epochs", "sgd: epochs per fit").range(1, 100'000).defaults_to(std::int64_t{100});
   s.integer("error_axes", "projection axes of the reported fit error").range(1, 1024).defaults_to(std::int64_t{32});

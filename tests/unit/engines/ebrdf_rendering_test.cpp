@@ -1,0 +1,102 @@
+#include <catch2/catch_approx.hpp>
+#include <catch2/catch_test_macros.hpp>
+
+#include <cmath>
+#include <numbers>
+
+#include "pbrfit/ebrdf/albedo_curve.hpp"
+#include "pbrfit/ebrdf/ggx_ltc_curve.hpp"
+#include "pbrfit/ebrdf/mip_tables.hpp"
+#include "pbrfit/ebrdf/plane_renderer.hpp"
+#include "pbrfit/ebrdf/plane_scene.hpp"
+
+using namespace pbrfit::ebrdf;
+using pbrfit::ltc::Matrix3;
+using pbrfit::ltc::Vector3;
+
+namespace {
+
+// A level whose every entry holds diag(value, value, 1) and amplitude value.
+LtcLevel constant_level(std::size_t side, const ViewGrid& views, float value) {
+  LtcLevel level{side, {}, {}};
+  for (std::size_t e = 0; e < side * side * views.count(); ++e) {
+    for (int k = 0; k < 9; ++k) level.matrices.push_back(k == 0 || k == 4 ? value : (k == 8 ? 1.0f : 0.0f));
+    level.amplitudes.push_back(value);
+  }
+  return level;
+}
+
+double mean_square_difference(const pbrfit::RgbImage& a, const pbrfit::RgbImage& b) {
+  double sum = 0.0;
+  for (std::size_t i = 0; i < a.values().size(); ++i) sum += std::pow(a.values()[i] - b.values()[i], 2);
+  return sum / double(a.values().size());
+}
+
+}  // namespace
+
+TEST_CASE("LTC mip lookups interpolate between levels, texels and views, wrapping u, v and phi") {
+  const ViewGrid views{2, 4};
+  LtcLevel fine = constant_level(2, views, 1.0f);
+  fine.amplitudes[1 * views.count() + 0] = 3.0f;  // texel (u 1, v 0), view (theta 0, phi 0)
+  const LtcMipTables tables(views, {fine, constant_level(1, views, 2.0f)});
+  CHECK(tables.lookup(1.0, 0.25, 0.25, 0.0, 0.0).amplitude == Catch::Approx(1.0));
+  CHECK(tables.lookup(1.0, 0.75, 0.25, 0.0, 0.0).amplitude == Catch::Approx(3.0));
+  CHECK(tables.lookup(1.0, 1.75, -0.75, 0.0, 0.0).amplitude == Catch::Approx(3.0));   // the map tiles
+  CHECK(tables.lookup(1.0, 0.5, 0.25, 0.0, 0.0).amplitude == Catch::Approx(2.0));     // between texels
+  CHECK(tables.lookup(1.0, 0.75, 0.25, 0.0, std::numbers::pi / 4).amplitude == Catch::Approx(2.0));  // views
+  CHECK(tables.lookup(1.0, 0.75, 0.25, 0.0, 7 * std::numbers::pi / 4).amplitude == Catch::Approx(2.0));  // wraps
+  CHECK(tables.lookup(1.5, 0.25, 0.25, 1.0, 1.0).amplitude == Catch::Approx(1.5));  // between levels
+  CHECK(tables.lookup(9.0, 0.1, 0.9, 1.0, 1.0).matrix(0, 0) == Catch::Approx(2.0));  // clamped to the coarsest
+  CHECK_THROWS_AS(LtcMipTables(views, {constant_level(2, ViewGrid{1, 1}, 1.0f)}), std::invalid_argument);
+}
+
+TEST_CASE("the base GGX LTC has the lobe's albedo and concentrates around the mirror direction") {
+  const double alpha = 0.09;
+  const GgxLtcCurve curve(alpha, 8);
+  const AlbedoCurve albedo({Component::specular, alpha});
+  for (double c : {1.0, 0.7, 0.3}) {
+    const LtcLookup lobe = curve.at(c);
+    CHECK(lobe.amplitude == Catch::Approx(albedo.at(c)).margin(0.02));
+    const Vector3 axis = (lobe.matrix * Vector3::UnitZ()).normalized();
+    CHECK(axis.x() < 0.05);  // towards the mirror side of a view at azimuth 0
+  }
+}
+
+TEST_CASE("on a flat map the ground truth, naive and prefiltered renders agree, and show the light") {
+  const NormalMap flat(8, std::vector<Vector3>(64, Vector3::UnitZ()));
+  const GgxLtcCurve curve(0.01, 16);
+  // Prefiltered tables of a flat map: every footprint's lobe is the base lobe itself, so take the curve's LTC
+  // at each tabulated elevation.
+  const ViewGrid views{8, 4};
+  std::vector<LtcLevel> levels;
+  for (std::size_t side = 4; side >= 1; side /= 2) {
+    LtcLevel level{side, {}, {}};
+    for (std::size_t t = 0; t < side * side; ++t)
+      for (std::size_t v = 0; v < views.count(); ++v) {
+        const LtcLookup lobe = curve.at(std::cos(views.theta(v / views.n_phi)));
+        for (int k = 0; k < 9; ++k) level.matrices.push_back(float(lobe.matrix(k / 3, k % 3)));
+        level.amplitudes.push_back(float(lobe.amplitude));
+      }
+    levels.push_back(std::move(level));
+  }
+  const LtcMipTables specular(views, levels);
+  for (auto& level : levels) std::fill(level.amplitudes.begin(), level.amplitudes.end(), 1.0f);
+  for (auto& level : levels)
+    for (std::size_t e = 0; e < level.amplitudes.size(); ++e)
+      for (int k = 0; k < 9; ++k) level.matrices[9 * e + std::size_t(k)] = k % 4 == 0 ? 1.0f : 0.0f;
+  const LtcMipTables diffuse(views, levels);
+  const RenderInputs inputs{&flat, &curve, &specular, &diffuse, {}};
+  for (const SceneView view : {SceneView::top, SceneView::grazing}) {
+    const PlaneScene scene = make_plane_scene(view, 8.0, 24);
+    CHECK(centre_texels_per_pixel(scene, 8) > 0.2);
+    const auto truth = render_plane(scene, RenderMethod::ground_truth, inputs);
+    const auto naive = render_plane(scene, RenderMethod::naive, inputs);
+    const auto ours = render_plane(scene, RenderMethod::ours, inputs);
+    float brightest = 0.0f;
+    for (float v : truth.values()) brightest = std::max(brightest, v);
+    CAPTURE(scene_view_name(view));
+    CHECK(brightest > 0.5f);
+    CHECK(mean_square_difference(truth, naive) < 5e-3);
+    CHECK(mean_square_difference(truth, ours) < 2e-2);
+  }
+}
