@@ -11,14 +11,6 @@ namespace {
 
 using ltc::Vector3;
 
-// The texel frame: z = n, x = the view's direction within the tangent plane of n.
-ltc::Frame texel_frame(const Vector3& n, const Vector3& v) {
-  Vector3 tangent = v - v.dot(n) * n;
-  if (tangent.norm() < 1e-9) return ltc::Frame::from_z(n);
-  tangent.normalize();
-  return {tangent, n.cross(tangent), n};
-}
-
 // A visible-normal sample of the lobe, accepted with probability rho / pdf = G2 / G1 <= 1.
 Vector3 specular_candidate(const ltc::GgxTarget& target, RandomStream& random, bool& accepted) {
   const double u1 = random.uniform();
@@ -29,6 +21,13 @@ Vector3 specular_candidate(const ltc::GgxTarget& target, RandomStream& random, b
 }
 
 }  // namespace
+
+ltc::Frame texel_frame(const Vector3& n, const Vector3& v) {
+  Vector3 tangent = v - v.dot(n) * n;
+  if (tangent.norm() < 1e-9) return ltc::Frame::from_z(n);
+  tangent.normalize();
+  return {tangent, n.cross(tangent), n};
+}
 
 std::vector<Vector3> sample_base_lobe(const BaseLobe& lobe, const Vector3& normal, const Vector3& view,
                                       std::size_t count, RandomStream& random) {

@@ -6,6 +6,7 @@
 #include <memory>
 #include <numbers>
 
+#include "pbrfit/ebrdf/base_lobe.hpp"
 #include "pbrfit/ebrdf/view_grid.hpp"
 #include "pbrfit/ltc/distribution.hpp"
 #include "pbrfit/ltc/polygon_integral.hpp"
@@ -41,9 +42,7 @@ double ltc_integral(const LtcLookup& lobe, const Polygon& polygon) {
 
 // MIP-0 shading of one micro-normal n at p: base GGX LTC in the texel frame, plus Lambert.
 double shade_normal(const RenderInputs& in, const Polygon& light, const Vector3& n, const Vector3& view) {
-  Vector3 tangent = view - view.dot(n) * n;
-  const ltc::Frame frame = tangent.norm() < 1e-9 ? ltc::Frame::from_z(n)
-                                                 : ltc::Frame{tangent.normalized(), n.cross(tangent.normalized()), n};
+  const ltc::Frame frame = texel_frame(n, view);
   Polygon local;
   for (std::size_t i = 0; i < 4; ++i) local[i] = frame.to_local(light[i]);
   const double specular = ltc_integral(in.base_ltc->at(view.dot(n)), local);

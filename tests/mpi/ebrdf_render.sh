@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# The reference renders of prefiltered tables are bitwise identical on 1 and 2 ranks; every scene view has
+# The reference renders of prefiltered tables are bitwise identical on 1 and 2 ranks (and threads), and after
+# a SIGTERM and a SIGKILL with resumes; every scene view has
 # its three renders, MSEs and texels per pixel; the report shows the renders and the error plot beside the
 # ebrdf report's levels; tables that are not a finished ebrdf result are refused naming the file.
 source "$(dirname "$0")/lib/common.bash"
@@ -20,9 +21,20 @@ YAML
 note "1 rank, then 2 ranks"
 run_ranks 1 run render.yaml --output r1.h5 -q
 expect_status 0
-run_ranks 2 run render.yaml --output r2.h5 -q
+run_ranks 2 run render.yaml --output r2.h5 --threads 2 -q
 expect_status 0
 expect_identical r1.h5 r2.h5 /ebrdf_render
+
+note "SIGTERM, resume, SIGKILL, resume: the same renders"
+sed -e 's|distances: \[1, 4, 16\]|distances: [1, 2, 4, 8, 16, 32]|' -e 's|resolution: 24|resolution: 96|' \
+  -e 's|^output: render.h5|output: result.h5\ncheckpoint: {interval_seconds: 0.2, interval_items: 1}|' render.yaml >long.yaml
+run_ranks 2 run long.yaml --output long-ref.h5 -q
+expect_status 0
+interrupt_after 2 TERM 2 run long.yaml -q
+interrupt_after $(($(items_done result.h5) + 2)) KILL 1 run long.yaml --resume -q
+run_ranks 2 run long.yaml --resume -q
+expect_status 0
+expect_identical long-ref.h5 result.h5 /ebrdf_render
 
 "$H5PY_PYTHON" - <<'PY' || fail "the render tables are wrong"
 import h5py, numpy as np

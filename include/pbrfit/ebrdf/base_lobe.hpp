@@ -27,6 +27,10 @@ struct BaseLobe {
   double alpha = 0.01;  // GGX width (specular only)
 };
 
+// The texel frame: z = the normal n, x = the view's direction within the tangent plane of n (when v is
+// parallel to n, Frame::from_z(n)).
+ltc::Frame texel_frame(const ltc::Vector3& n, const ltc::Vector3& v);
+
 std::vector<ltc::Vector3> sample_base_lobe(const BaseLobe& lobe, const ltc::Vector3& normal, const ltc::Vector3& view,
                                            std::size_t count, RandomStream& random);
 

@@ -28,9 +28,9 @@ std::optional<eb::LtcMipTables> read_component(const std::string& path, const st
   if (std::find(groups.begin(), groups.end(), component) == groups.end()) return std::nullopt;
   std::vector<eb::LtcLevel> levels;
   eb::ViewGrid views;
+  const auto names = store::read_group_names(path, "ebrdf/" + component);
   for (std::size_t level = 1;; ++level) {
     const std::string group = "ebrdf/" + component + "/mip" + std::to_string(level);
-    const auto names = store::read_group_names(path, "ebrdf/" + component);
     if (std::find(names.begin(), names.end(), "mip" + std::to_string(level)) == names.end()) break;
     std::vector<std::uint64_t> dims;
     eb::LtcLevel table;
