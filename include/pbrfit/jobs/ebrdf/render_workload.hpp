@@ -3,7 +3,7 @@
 // result. One item per (scene, distance): the plane rendered by the ground truth, the naive mip-mapped
 // normals and the prefiltered LTCs (ebrdf/plane_renderer.hpp), stored as sRGB display images, with each
 // method's MSE against the ground truth over the pixels that see the plane (display values in [0, 1]) and
-// the texels per pixel at the image centre. The layout is docs/results-ebrdf.md.
+// the texels per pixel at the image centre. The layout is docs/results-ebrdf_render.md.
 #include <memory>
 #include <string>
 #include <vector>
