@@ -12,7 +12,6 @@ namespace {
 // amounts the write or checkpoint comes early, whatever the intervals, so rank 0's memory stays bounded.
 constexpr std::uint64_t max_unwritten_blocks = 65536;
 constexpr std::size_t max_unjournaled_bytes = std::size_t(32) << 20;
-constexpr double max_publish_share = 0.05;
 
 double seconds_since(std::chrono::steady_clock::time_point t) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
@@ -27,7 +26,8 @@ Persistence::Persistence(const RunSettings& settings, const Workload& workload, 
       state_(state),
       checkpointer_(checkpointer),
       file_(file),
-      items_total_(workload.total_items()) {}
+      items_total_(workload.total_items()),
+      pacing_(settings.flush_interval_seconds) {}
 
 store::Progress Persistence::progress(const std::string& state, double elapsed) const {
   store::Progress p;
@@ -49,8 +49,7 @@ void Persistence::tick(double elapsed) {
   if ((checkpoint_by_time || checkpoint_by_items || checkpoint_by_memory) && state_.has_news()) save_checkpoint(elapsed);
   if (seconds_since(last_write_) >= settings_.flush_interval_seconds || state_.unflushed_blocks() >= max_unwritten_blocks)
     write("running", elapsed);
-  const double publish_wait = std::max(settings_.flush_interval_seconds, publish_cost_seconds_ / max_publish_share);
-  if (unpublished_ && seconds_since(last_publish_) >= publish_wait) publish();
+  if (unpublished_ && seconds_since(last_publish_) >= pacing_.wait_seconds()) publish();
 }
 
 void Persistence::save_checkpoint(double elapsed) {
@@ -72,7 +71,7 @@ void Persistence::write(const std::string& state, double elapsed) {
 void Persistence::publish() {
   const auto start = Clock::now();
   file_.publish();
-  publish_cost_seconds_ = seconds_since(start);
+  pacing_.copied(seconds_since(start));
   last_publish_ = Clock::now();
   unpublished_ = false;
 }

@@ -1,7 +1,7 @@
 #pragma once
 // When rank 0's state reaches the disk. Finished blocks go into the result file's working copy about
-// once a second (sooner when many wait), which is published to readers at most every
-// publish_interval_seconds and never more than 5 % of the time (copying grows with the file); blocks go
+// once a second (sooner when many wait), which is published to readers as PublishPacing allows (copying
+// grows with the file); blocks go
 // to the block journal, and what is new to the checkpoint, at the job's checkpoint interval (sooner when
 // many wait). Private to the runtime.
 #include <chrono>
@@ -11,6 +11,7 @@
 #include "checkpointer.hpp"
 #include "pbrfit/runtime/job_runner.hpp"
 #include "pbrfit/store/result_file.hpp"
+#include "publish_pacing.hpp"
 #include "run_state.hpp"
 
 namespace pbrfit::runtime {
@@ -44,7 +45,7 @@ class Persistence {
   std::uint64_t finished_since_checkpoint_ = 0;
   Clock::time_point last_checkpoint_ = Clock::now(), last_write_ = last_checkpoint_,
                     last_publish_ = last_checkpoint_;
-  double publish_cost_seconds_ = 0.0;
+  PublishPacing pacing_;
   bool unpublished_ = false;
 };
 

@@ -91,6 +91,7 @@ interrupt_after() {
   else
     kill "-$signal" $(rank_pids)
     wait_background
+    [[ $STATUS -ne 0 ]] || fail "the job completed before SIG$signal reached its ranks: result.h5 showed $items items only then"
     expect_status 75 "ranks stopped by SIG$signal"
   fi
 }

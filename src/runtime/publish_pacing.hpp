@@ -1,0 +1,40 @@
+#pragma once
+// How long rank 0 waits between publications of the result file: at least the flush interval, and long
+// enough that copying takes at most 5 % of the time. A copy's cost is judged by the median of the last
+// five copies, so one copy stalled by a busy disk does not hold back the next publication for twenty
+// times its length (readers such as `pbrfit status` would see no progress meanwhile). Private to the
+// runtime.
+#include <algorithm>
+#include <array>
+#include <cstddef>
+
+namespace pbrfit::runtime {
+
+class PublishPacing {
+ public:
+  explicit PublishPacing(double flush_interval_seconds) : flush_interval_seconds_(flush_interval_seconds) {}
+
+  void copied(double seconds) {
+    recent_[next_ % recent_.size()] = seconds;
+    ++next_;
+  }
+
+  double wait_seconds() const { return std::max(flush_interval_seconds_, typical_cost() / max_share); }
+
+ private:
+  static constexpr double max_share = 0.05;
+
+  double typical_cost() const {
+    const std::size_t n = std::min(next_, recent_.size());
+    if (n == 0) return 0.0;
+    std::array<double, 5> sorted = recent_;
+    std::sort(sorted.begin(), sorted.begin() + std::ptrdiff_t(n));
+    return sorted[n / 2];
+  }
+
+  double flush_interval_seconds_;
+  std::array<double, 5> recent_{};
+  std::size_t next_ = 0;
+};
+
+}  // namespace pbrfit::runtime
