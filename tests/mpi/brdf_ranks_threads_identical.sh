@@ -26,6 +26,8 @@ front, log = f["brdf/front"][...], f["brdf/log"][...]
 assert len(front) >= 1 and (front["knee"] == 1).sum() == 1
 assert np.all(np.diff(front["cost"]) > 0) and np.all(np.diff(front["rmse"]) < 0), "a front: size rises, error falls"
 assert len(log) == 2 * 4, len(log)                          # 2 islands x 4 generations
+assert np.all(log["abandoned"][log["generation"] == 0] == 0), "generation 0 has no median to abandon at"
+assert log["abandoned"][log["generation"] > 0].sum() > 0, "no fit was abandoned"
 e = f["brdf/evaluation"]
 models = [m.decode() for m in e["models"]["model"]]
 assert models[0] == "cook_torrance", models

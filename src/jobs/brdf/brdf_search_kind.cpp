@@ -120,6 +120,7 @@ BrdfSearchSettings brdf_search_settings(const spec::Section& s) {
   b.migration_interval = std::size_t(s.get_int("migration_interval"));
   b.migrants = std::size_t(s.get_int("migrants"));
   b.chunk = std::size_t(s.get_int("chunk"));
+  b.abandon_poor = s.get_bool("abandon_poor");
   b.evolution = {std::size_t(s.get_int("tournament_size")), std::size_t(s.get_int("max_genome"))};
   check_island_model(s, b);
   b.fit = fit_of(s.get_section("fit"));

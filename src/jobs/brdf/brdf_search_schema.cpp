@@ -73,6 +73,9 @@ spec::Schema brdf_search_schema() {
   s.integer("max_genome", "edits per genome").range(1, 100'000).defaults_to(int64_t{512});
   s.integer("max_nodes", "the largest tree an edit may make").range(1, 100'000).defaults_to(int64_t{256});
   s.integer("chunk", "trees per evaluation work item").range(1, 1'000'000).defaults_to(int64_t{4});
+  s.boolean("abandon_poor", "stop fitting a candidate once its error on the first materials exceeds the "
+            "previous generation's median (its error is then a lower bound; it stays out of the front)")
+      .defaults_to(true);
   s.section("fit", fit_schema(4, 100), "the parameter fits of the search");
   s.section("evaluate", evaluation_schema(), "the evaluation after the search");
   return s;

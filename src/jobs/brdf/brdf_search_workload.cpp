@@ -79,6 +79,7 @@ Bytes BrdfSearchWorkload::compute(const runtime::ItemTask& task) const {
 // Fits trees chunk x item .. chunk x (item + 1) - 1 of the context's distinct trees.
 Bytes BrdfSearchWorkload::evaluate(const runtime::ItemTask& task) const {
   ByteReader in(task.context);
+  const double abandon_above = in.get<double>();
   const std::size_t distinct = in.get_varint(), first = task.id.item * settings_.chunk;
   const std::size_t last = std::min(distinct, first + settings_.chunk);
   EvaluationRecord record;
@@ -88,11 +89,12 @@ Bytes BrdfSearchWorkload::evaluate(const runtime::ItemTask& task) const {
     const gp::SyntaxTree tree = read_tree(in, brdf_input_count, brdf_parameter_count);
     const auto compiled = gp::compile(tree, brdf_parameter_count);
     CandidateScore score;
-    if (compiled) score = score_candidate(*compiled, *settings_.data, settings_.fit, task.random(k - first));
+    if (compiled) score = score_candidate(*compiled, *settings_.data, settings_.fit, task.random(k - first), abandon_above);
     record.errors.push_back(score.error);
     record.sizes.push_back(double(tree.size()));
     score.material_errors.resize(settings_.data->materials(), gp::worst_error);
     record.material_errors.push_back(score.material_errors);
+    record.abandoned.push_back(score.abandoned ? 1 : 0);
     if (task.stop_requested()) throw runtime::Cancelled();
   }
   return encode(record);

@@ -8,7 +8,8 @@
 namespace pbrfit::jobs::brdf {
 
 CandidateScore score_candidate(const gp::CompiledTree& candidate, const MetricData& data,
-                               const gp::ParameterFitOptions& options, const RandomStream& random) {
+                               const gp::ParameterFitOptions& options, const RandomStream& random,
+                               double abandon_above) {
   CandidateScore score;
   double total = 0.0;
   for (std::size_t m = 0; m < data.materials(); ++m) {
@@ -24,6 +25,11 @@ CandidateScore score_candidate(const gp::CompiledTree& candidate, const MetricDa
     }
     score.material_errors.push_back(std::sqrt(material));
     total += material;
+    if (!std::isfinite(total)) break;
+    if (std::sqrt(total) > abandon_above && m + 1 < data.materials()) {
+      score.abandoned = true;
+      break;
+    }
   }
   score.error = std::isfinite(total) ? std::sqrt(total) : gp::worst_error;
   return score;

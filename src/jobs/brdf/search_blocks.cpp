@@ -19,7 +19,7 @@ store::Block last_log_block(const FrontRecord& record, std::size_t generation) {
   for (std::size_t island = 0; island < record.last_generation.size(); ++island) {
     const auto& s = record.last_generation[island];
     log.values.insert(log.values.end(), {double(generation), double(island), s.best_error,
-                                         s.median_size, double(s.infeasible), 0.0});
+                                         s.median_size, double(s.infeasible), double(s.abandoned), 0.0});
   }
   return log;
 }
@@ -38,7 +38,7 @@ std::vector<store::Block> BrdfSearchWorkload::blocks(WorkItemId id, const Bytes&
   const auto record = decode_breed(result);
   return {{"brdf", "log", {0}, {1},
            {double(record.generation), double(id.item), record.best_error, record.median_size,
-            double(record.infeasible), double(record.migrants_in)}}};
+            double(record.infeasible), double(record.abandoned), double(record.migrants_in)}}};
 }
 
 std::vector<store::Block> BrdfSearchWorkload::front_blocks(WorkItemId id, const Bytes& result) const {

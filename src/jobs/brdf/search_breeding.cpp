@@ -17,6 +17,7 @@ void write_members(ByteWriter& out, const std::vector<Evaluated>& members) {
     write_genome(out, m.genome);
     out.put(m.error);
     out.put(m.size);
+    out.put(std::uint8_t(m.abandoned));
   }
 }
 
@@ -26,6 +27,7 @@ std::vector<Evaluated> read_members(ByteReader& in) {
     m.genome = read_genome(in);
     m.error = in.get<double>();
     m.size = in.get<double>();
+    m.abandoned = in.get<std::uint8_t>() != 0;
   }
   return members;
 }
@@ -43,11 +45,14 @@ std::vector<std::size_t> ranked(const std::vector<Evaluated>& members) {
 
 void record_statistics(const std::vector<Evaluated>& members, BreedRecord& record) {
   std::vector<double> errors, sizes;
-  for (const auto& m : members) errors.push_back(m.error), sizes.push_back(m.size);
-  const auto s = island_statistics(errors, sizes);
+  std::vector<std::uint8_t> abandoned;
+  for (const auto& m : members) errors.push_back(m.error), sizes.push_back(m.size), abandoned.push_back(m.abandoned);
+  const auto s = island_statistics(errors, sizes, abandoned);
   record.best_error = s.best_error;
+  record.median_error = s.median_error;
   record.median_size = s.median_size;
   record.infeasible = s.infeasible;
+  record.abandoned = s.abandoned;
 }
 
 }  // namespace

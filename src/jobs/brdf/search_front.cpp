@@ -1,6 +1,8 @@
 // The Pareto front of a genBRDF search (brdf_search_workload.hpp): error vs tree size over every
 // generation, and the culling of the knee's sub-expressions at the end (Brady et al., section 1).
 #include <cmath>
+#include <span>
+#include <stdexcept>
 
 #include "pbrfit/gp/knee.hpp"
 #include "pbrfit/jobs/brdf/brdf_inputs.hpp"
@@ -19,11 +21,13 @@ bool dominates(const ScoredTree& a, const ScoredTree& b) {
 }
 
 // The non-dominated trees of front + candidates (the earlier kept on equal objectives), and those of the
-// candidates that made it.
-FrontRecord merged(std::vector<ScoredTree> front, const std::vector<ScoredTree>& candidates) {
+// candidates that made it. Abandoned candidates, whose errors are lower bounds, stay out.
+FrontRecord merged(std::vector<ScoredTree> front, const std::vector<ScoredTree>& candidates,
+                   const std::vector<std::uint8_t>& abandoned) {
   FrontRecord out;
-  for (const auto& c : candidates) {
-    if (!std::isfinite(c.error)) continue;
+  for (std::size_t k = 0; k < candidates.size(); ++k) {
+    const ScoredTree& c = candidates[k];
+    if (!std::isfinite(c.error) || abandoned[k]) continue;
     bool beaten = false;
     for (const auto& f : front) beaten = beaten || dominates(f, c) || (f.error == c.error && f.size() == c.size());
     if (beaten) continue;
@@ -40,12 +44,14 @@ FrontRecord merged(std::vector<ScoredTree> front, const std::vector<ScoredTree>&
 }
 
 // Per island (population consecutive candidates each), the log's figures of the last generation.
-std::vector<IslandStatistics> last_statistics(const std::vector<ScoredTree>& candidates, std::size_t population) {
+std::vector<IslandStatistics> last_statistics(const std::vector<ScoredTree>& candidates,
+                                              const std::vector<std::uint8_t>& abandoned, std::size_t population) {
   std::vector<IslandStatistics> out;
   for (std::size_t first = 0; first + population <= candidates.size(); first += population) {
     std::vector<double> errors, sizes;
     for (std::size_t k = first; k < first + population; ++k) errors.push_back(candidates[k].error), sizes.push_back(candidates[k].size());
-    out.push_back(island_statistics(errors, sizes));
+    const auto island = std::span(abandoned).subspan(first, population);
+    out.push_back(island_statistics(errors, sizes, island));
   }
   return out;
 }
@@ -58,8 +64,13 @@ Bytes BrdfSearchWorkload::front_input(std::uint32_t stage, const ItemResults& ke
   const Bytes& previous = kept_result(kept, {stage - 2, item_count(stage - 2) - 1});
   out.put_bytes(previous);
   std::vector<ScoredTree> candidates;
-  for (auto& m : generation_members(stage, kept)) candidates.push_back({std::move(m.tree), m.error, generation_of(stage) - 1u});
+  std::vector<std::uint8_t> abandoned;
+  for (auto& m : generation_members(stage, kept)) {
+    candidates.push_back({std::move(m.tree), m.error, generation_of(stage) - 1u});
+    abandoned.push_back(m.abandoned);
+  }
   write_scored(out, candidates);
+  out.put_array(std::span<const std::uint8_t>(abandoned));
   return out.take();
 }
 
@@ -68,8 +79,10 @@ Bytes BrdfSearchWorkload::keep_front(const runtime::ItemTask& task) const {
   ByteReader in(task.input);
   const FrontRecord previous = decode_front(in.get_bytes(), brdf_input_count, brdf_parameter_count);
   const auto candidates = read_scored(in, brdf_input_count, brdf_parameter_count);
-  FrontRecord record = merged(previous.front, candidates);
-  if (task.id.stage == front_stage()) record.last_generation = last_statistics(candidates, settings_.population);
+  const auto abandoned = in.get_array<std::uint8_t>();
+  if (abandoned.size() != candidates.size()) throw std::logic_error("brdf search: a front input without its flags");
+  FrontRecord record = merged(previous.front, candidates, abandoned);
+  if (task.id.stage == front_stage()) record.last_generation = last_statistics(candidates, abandoned, settings_.population);
   if (task.id.stage == front_stage() && !record.front.empty()) {
     std::vector<gp::Fitness> fitness;
     for (const auto& f : record.front) fitness.push_back({f.error, f.size(), 0.0, true});

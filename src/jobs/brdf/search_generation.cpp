@@ -49,11 +49,22 @@ std::vector<Evaluated> BrdfSearchWorkload::bred_members(std::uint32_t breeding_s
   return out;
 }
 
-// The distinct trees of the generation bred at stage - 1, for the evaluation stage.
+// Fits are abandoned above the worst island median of the generation bred from (none in generation 0,
+// whose breeding records hold no statistics).
+double BrdfSearchWorkload::abandon_threshold(std::uint32_t breeding_stage, const ItemResults& kept) const {
+  if (!settings_.abandon_poor || generation_of(breeding_stage) == 0) return gp::worst_error;
+  double threshold = 0.0;
+  for (std::uint64_t i = 0; i < settings_.islands; ++i)
+    threshold = std::max(threshold, decode_breed(kept_result(kept, {breeding_stage, i})).median_error);
+  return threshold;
+}
+
+// The abandon threshold, then the distinct trees of the generation bred at stage - 1, for the evaluation.
 Bytes BrdfSearchWorkload::stage_context(std::uint32_t stage, const ItemResults& kept) const {
   if (role({stage, 0}) != Role::evaluation) return {};
   const auto members = bred_members(stage - 1, kept);
   ByteWriter out;
+  out.put(abandon_threshold(stage - 1, kept));
   const auto trees = distinct(members);
   out.put_varint(trees.first_slot.size());
   for (const std::size_t s : trees.first_slot) write_tree(out, members[s].tree);
@@ -64,13 +75,18 @@ std::vector<Evaluated> BrdfSearchWorkload::generation_members(std::uint32_t bree
   auto members = bred_members(breeding_stage - 2, kept);
   const auto trees = distinct(members);
   std::vector<double> errors;
+  std::vector<std::uint8_t> abandoned;
   for (std::uint64_t c = 0; c < chunks(); ++c) {
     const auto record = decode_evaluation(kept_result(kept, {breeding_stage - 1, c}));
     errors.insert(errors.end(), record.errors.begin(), record.errors.end());
+    abandoned.insert(abandoned.end(), record.abandoned.begin(), record.abandoned.end());
   }
   if (errors.size() != trees.first_slot.size())
     throw std::logic_error("brdf search: the evaluations do not match the generation's distinct trees");
-  for (std::size_t s = 0; s < members.size(); ++s) members[s].error = errors[trees.slot_tree[s]];
+  for (std::size_t s = 0; s < members.size(); ++s) {
+    members[s].error = errors[trees.slot_tree[s]];
+    members[s].abandoned = abandoned[trees.slot_tree[s]] != 0;
+  }
   return members;
 }
 

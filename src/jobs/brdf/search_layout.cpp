@@ -50,6 +50,7 @@ store::ResultLayout BrdfSearchWorkload::layout() const {
                {"best_error", ValueType::f64, "best error on the island"},
                {"median_size", ValueType::f64, "median tree size"},
                {"infeasible", ValueType::u32, "members whose error is not finite"},
+               {"abandoned", ValueType::u32, "members whose fits stopped early, worse than the generation before's median"},
                {"migrants_in", ValueType::u32, "members replaced by migrants before breeding"}}),
       records("simplified", "row", "the knee of the front before and after culling sub-expressions that do not "
                                    "raise its error",

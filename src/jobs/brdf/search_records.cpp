@@ -22,8 +22,10 @@ Bytes encode(const BreedRecord& r) {
   for (const auto& t : r.trees) write_tree(out, t);
   out.put_varint(r.generation);
   out.put(r.best_error);
+  out.put(r.median_error);
   out.put(r.median_size);
   out.put(r.infeasible);
+  out.put(r.abandoned);
   out.put(r.migrants_in);
   return out.take();
 }
@@ -37,8 +39,10 @@ BreedRecord decode_breed(const Bytes& bytes) {
     for (std::uint64_t k = 0; k < n; ++k) r.trees.push_back(read_tree(in, brdf_input_count, brdf_parameter_count));
     r.generation = in.get_varint();
     r.best_error = in.get<double>();
+    r.median_error = in.get<double>();
     r.median_size = in.get<double>();
     r.infeasible = in.get<std::uint32_t>();
+    r.abandoned = in.get<std::uint32_t>();
     r.migrants_in = in.get<std::uint32_t>();
     return r;
   });
@@ -49,6 +53,7 @@ Bytes encode(const EvaluationRecord& r) {
   out.put_array(std::span<const double>(r.errors));
   out.put_array(std::span<const double>(r.sizes));
   for (const auto& m : r.material_errors) out.put_array(std::span<const double>(m));
+  out.put_array(std::span<const std::uint8_t>(r.abandoned));
   return out.take();
 }
 
@@ -59,19 +64,33 @@ EvaluationRecord decode_evaluation(const Bytes& bytes) {
     r.sizes = in.get_array<double>();
     if (r.sizes.size() != r.errors.size()) throw ByteFormatError(in.offset(), "errors and sizes differ in number");
     for (std::size_t k = 0; k < r.errors.size(); ++k) r.material_errors.push_back(in.get_array<double>());
+    r.abandoned = in.get_array<std::uint8_t>();
+    if (r.abandoned.size() != r.errors.size()) throw ByteFormatError(in.offset(), "errors and abandoned flags differ in number");
     return r;
   });
 }
 
-IslandStatistics island_statistics(std::span<const double> errors, std::span<const double> sizes) {
+namespace {
+
+double median(std::span<const double> values) {
+  if (values.empty()) return 0.0;
+  std::vector<double> sorted(values.begin(), values.end());
+  std::nth_element(sorted.begin(), sorted.begin() + std::ptrdiff_t(sorted.size() / 2), sorted.end());
+  return sorted[sorted.size() / 2];
+}
+
+}  // namespace
+
+IslandStatistics island_statistics(std::span<const double> errors, std::span<const double> sizes,
+                                   std::span<const std::uint8_t> abandoned) {
   IslandStatistics out;
-  for (const double e : errors) {
-    if (std::isfinite(e)) out.best_error = std::min(out.best_error, e);
-    else ++out.infeasible;
+  for (std::size_t k = 0; k < errors.size(); ++k) {
+    if (!std::isfinite(errors[k])) ++out.infeasible;
+    else if (abandoned[k]) ++out.abandoned;
+    else out.best_error = std::min(out.best_error, errors[k]);
   }
-  std::vector<double> sorted(sizes.begin(), sizes.end());
-  std::sort(sorted.begin(), sorted.end());
-  if (!sorted.empty()) out.median_size = sorted[sorted.size() / 2];
+  out.median_error = errors.empty() ? gp::worst_error : median(errors);
+  out.median_size = median(sizes);
   return out;
 }
 
@@ -83,8 +102,10 @@ Bytes encode(const FrontRecord& r) {
   out.put_varint(r.last_generation.size());
   for (const auto& s : r.last_generation) {
     out.put(s.best_error);
+    out.put(s.median_error);
     out.put(s.median_size);
     out.put(s.infeasible);
+    out.put(s.abandoned);
   }
   return out.take();
 }
@@ -100,8 +121,10 @@ FrontRecord decode_front(const Bytes& bytes, std::size_t inputs, std::size_t par
     for (std::uint64_t k = 0; k < islands; ++k) {
       IslandStatistics s;
       s.best_error = in.get<double>();
+      s.median_error = in.get<double>();
       s.median_size = in.get<double>();
       s.infeasible = in.get<std::uint32_t>();
+      s.abandoned = in.get<std::uint32_t>();
       r.last_generation.push_back(s);
     }
     return r;

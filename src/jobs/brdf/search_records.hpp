@@ -18,25 +18,32 @@ struct BreedRecord {
   std::vector<gp::SyntaxTree> trees;
   std::uint64_t generation = 0;  // the generation the statistics describe (0 before any evaluation)
   double best_error = gp::worst_error;
+  double median_error = gp::worst_error;  // over every member, abandoned ones at their lower bound
   double median_size = 0.0;
   std::uint32_t infeasible = 0;
+  std::uint32_t abandoned = 0;
   std::uint32_t migrants_in = 0;
 };
 
-// An evaluation item: per tree of its chunk, the error, the tree's size and each material's error.
+// An evaluation item: per tree of its chunk, the error, the tree's size, each material's error and whether
+// its fits were abandoned (candidate_score.hpp: the error is then a lower bound).
 struct EvaluationRecord {
   std::vector<double> errors, sizes;
   std::vector<std::vector<double>> material_errors;
+  std::vector<std::uint8_t> abandoned;
 };
 
 // The front item: the Pareto front so far and what entered it at this step.
 // The log's figures of one island's evaluated generation.
 struct IslandStatistics {
-  double best_error = gp::worst_error;  // over the finite errors
+  double best_error = gp::worst_error;  // over the finite errors of complete fits
+  double median_error = gp::worst_error;
   double median_size = 0.0;
   std::uint32_t infeasible = 0;  // members whose error is not finite
+  std::uint32_t abandoned = 0;   // members whose fits were abandoned
 };
-IslandStatistics island_statistics(std::span<const double> errors, std::span<const double> sizes);
+IslandStatistics island_statistics(std::span<const double> errors, std::span<const double> sizes,
+                                   std::span<const std::uint8_t> abandoned);
 
 struct FrontRecord {
   std::vector<ScoredTree> front, additions;

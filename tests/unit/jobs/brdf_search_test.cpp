@@ -126,3 +126,39 @@ TEST_CASE("evaluating a material renders it measured and fitted, and compares th
   // The measured render and Cook-Torrance's are not black.
   CHECK(std::any_of(result.renders.begin(), result.renders.begin() + 32 * 32 * 3, [](auto v) { return v > 20; }));
 }
+
+TEST_CASE("a candidate worse than the threshold on its first materials is abandoned with a lower bound") {
+  const MetricData data(small_scene().table, {cook_torrance_material(), cook_torrance_material(), cook_torrance_material()},
+                        {"a", "b", "c"});
+  const auto constant = compiled(tree_of_text("p0"));
+  const auto full = score_candidate(constant, data, {3, 200}, RandomStream(4, 0));
+  REQUIRE_FALSE(full.abandoned);
+  REQUIRE(full.material_errors.size() == 3);
+  SECTION("above the threshold after the first material: the others are skipped") {
+    const auto cut = score_candidate(constant, data, {3, 200}, RandomStream(4, 0), 0.5 * full.material_errors[0]);
+    CHECK(cut.abandoned);
+    CHECK(cut.material_errors.size() == 1);
+    CHECK(cut.error == full.material_errors[0]);
+    CHECK(cut.error < full.error);  // a lower bound
+    CHECK(cut.evaluations < full.evaluations / 2);
+  }
+  SECTION("a threshold the full error stays under changes nothing") {
+    const auto kept = score_candidate(constant, data, {3, 200}, RandomStream(4, 0), 1.01 * full.error);
+    CHECK_FALSE(kept.abandoned);
+    CHECK(kept.error == full.error);
+    CHECK(kept.parameters == full.parameters);
+  }
+  SECTION("exceeding it only with the last material is no reason to stop: the error is complete") {
+    const double before_last = std::hypot(full.material_errors[0], full.material_errors[1]);
+    const auto last = score_candidate(constant, data, {3, 200}, RandomStream(4, 0), 0.5 * (before_last + full.error));
+    CHECK_FALSE(last.abandoned);
+    CHECK(last.error == full.error);
+  }
+}
+
+TEST_CASE("a candidate without a finite error on its first material is not fitted further") {
+  const MetricData data(small_scene().table, {cook_torrance_material(), cook_torrance_material()}, {"a", "b"});
+  const auto infinite = score_candidate(compiled(tree_of_text("p0 / (nl - nl)")), data, {2, 50}, RandomStream(5, 0));
+  CHECK(infinite.error == gp::worst_error);
+  CHECK(infinite.material_errors.size() == 1);
+}

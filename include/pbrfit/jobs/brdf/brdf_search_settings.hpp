@@ -48,6 +48,7 @@ struct BrdfSearchSettings {
   std::size_t migration_interval = 5;
   std::size_t migrants = 1;
   std::size_t chunk = 4;  // trees per evaluation work item
+  bool abandon_poor = true;  // stop fitting a candidate once it is worse than the last generation's median
   gp::EditEvolutionOptions evolution;
   gp::ParameterFitOptions fit;
   EvaluationSettings evaluation;

@@ -7,8 +7,9 @@
 //    so far merged with generation g - 1;
 //  - stage 2g + 1, evaluation: the distinct trees of generation g (the stage context, in order of first
 //    appearance over the islands' slots), `chunk` per item whatever the islands, so every core works; each
-//    compiled and fitted to every training material and channel (candidate_score.hpp). Items past the
-//    distinct trees have nothing to do;
+//    compiled and fitted to every training material and channel (candidate_score.hpp), abandoned once
+//    worse than the worst island median of generation g - 1 (`abandon_poor`; the context's last value).
+//    Items past the distinct trees have nothing to do;
 //  - stage 2G: the last front, whose knee is simplified by culling sub-expressions that do not raise the
 //    error;
 //  - stage 2G + 1 (when evaluating): an item per training then testing material fits the seed and the
@@ -54,6 +55,7 @@ class BrdfSearchWorkload final : public runtime::Workload {
     gp::SyntaxTree tree{{gp::SyntaxNode{}}};
     double error = gp::worst_error;
     double size = 0.0;
+    bool abandoned = false;  // the error is a lower bound (candidate_score.hpp)
   };
 
  private:
@@ -63,6 +65,7 @@ class BrdfSearchWorkload final : public runtime::Workload {
   std::uint32_t generation_of(std::uint32_t stage) const { return stage / 2; }
   std::size_t members() const { return settings_.islands * settings_.population; }
   std::size_t chunks() const { return (members() + settings_.chunk - 1) / settings_.chunk; }
+  double abandon_threshold(std::uint32_t breeding_stage, const ItemResults& kept) const;
   std::size_t evaluated_materials() const;
   std::string evaluated_material(std::uint64_t item) const;  // training, then testing
   std::vector<std::string> model_names() const;

@@ -6,7 +6,9 @@
 // materials.
 //
 // Contract: deterministic for the same stream key (fit m, c draws from random.derive(3 m + c)); a candidate
-// with a non-finite error on any fit scores worst_error. Safe to call from many threads at once.
+// with a non-finite error on any fit scores worst_error (the remaining fits are skipped). When the error of
+// the materials fitted so far exceeds abandon_above, the rest are skipped too: the score is then
+// `abandoned` and its error a lower bound of the full one. Safe to call from many threads at once.
 #include <vector>
 
 #include "pbrfit/core/random_stream.hpp"
@@ -21,9 +23,11 @@ struct CandidateScore {
   std::vector<double> material_errors;          // sqrt of each material's S' summed over channels
   std::vector<std::vector<double>> parameters;  // [3 material + channel][parameter]
   std::size_t evaluations = 0;
+  bool abandoned = false;
 };
 
 CandidateScore score_candidate(const gp::CompiledTree& candidate, const MetricData& data,
-                               const gp::ParameterFitOptions& options, const RandomStream& random);
+                               const gp::ParameterFitOptions& options, const RandomStream& random,
+                               double abandon_above = gp::worst_error);
 
 }  // namespace pbrfit::jobs::brdf
