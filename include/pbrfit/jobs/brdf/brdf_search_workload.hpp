@@ -8,7 +8,7 @@
 //  - stage 2g + 1, evaluation: the distinct trees of generation g (the stage context, in order of first
 //    appearance over the islands' slots), `chunk` per item whatever the islands, so every core works; each
 //    compiled and fitted to every training material and channel (candidate_score.hpp), abandoned once
-//    worse than the worst island median of generation g - 1 (`abandon_poor`; the context's last value).
+//    worse than the worst island median of generation g - 1 (`abandon_poor`; the context's first value).
 //    Items past the distinct trees have nothing to do;
 //  - stage 2G: the last front, whose knee is simplified by culling sub-expressions that do not raise the
 //    error;
