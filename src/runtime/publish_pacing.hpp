@@ -12,27 +12,29 @@ namespace pbrfit::runtime {
 
 class PublishPacing {
  public:
-  explicit PublishPacing(double flush_interval_seconds) : flush_interval_seconds_(flush_interval_seconds) {}
+  explicit PublishPacing(double flush_interval_seconds)
+      : flush_interval_seconds_(flush_interval_seconds), wait_seconds_(flush_interval_seconds) {}
 
   void copied(double seconds) {
     recent_[next_ % recent_.size()] = seconds;
     ++next_;
+    wait_seconds_ = std::max(flush_interval_seconds_, typical_cost() / max_share);
   }
 
-  double wait_seconds() const { return std::max(flush_interval_seconds_, typical_cost() / max_share); }
+  double wait_seconds() const { return wait_seconds_; }
 
  private:
   static constexpr double max_share = 0.05;
 
   double typical_cost() const {
     const std::size_t n = std::min(next_, recent_.size());
-    if (n == 0) return 0.0;
     std::array<double, 5> sorted = recent_;
     std::sort(sorted.begin(), sorted.begin() + std::ptrdiff_t(n));
     return sorted[n / 2];
   }
 
   double flush_interval_seconds_;
+  double wait_seconds_;  // a function of the above and recent_, kept because rank 0's loop asks often
   std::array<double, 5> recent_{};
   std::size_t next_ = 0;
 };

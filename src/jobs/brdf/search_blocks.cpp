@@ -13,14 +13,17 @@ namespace {
 
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 
+void append_log_row(store::Block& log, std::size_t generation, std::size_t island, const IslandStatistics& s,
+                    std::uint32_t migrants_in) {
+  log.values.insert(log.values.end(), {double(generation), double(island), s.best_error, s.median_size,
+                                       double(s.infeasible), double(s.abandoned), double(migrants_in)});
+}
+
 // The log rows of the last generation, which no breeding item describes.
 store::Block last_log_block(const FrontRecord& record, std::size_t generation) {
   store::Block log{"brdf", "log", {0}, {record.last_generation.size()}};
-  for (std::size_t island = 0; island < record.last_generation.size(); ++island) {
-    const auto& s = record.last_generation[island];
-    log.values.insert(log.values.end(), {double(generation), double(island), s.best_error,
-                                         s.median_size, double(s.infeasible), double(s.abandoned), 0.0});
-  }
+  for (std::size_t island = 0; island < record.last_generation.size(); ++island)
+    append_log_row(log, generation, island, record.last_generation[island], 0);
   return log;
 }
 
@@ -36,9 +39,9 @@ std::vector<store::Block> BrdfSearchWorkload::blocks(WorkItemId id, const Bytes&
   }
   if (generation_of(id.stage) == 0) return {};
   const auto record = decode_breed(result);
-  return {{"brdf", "log", {0}, {1},
-           {double(record.generation), double(id.item), record.best_error, record.median_size,
-            double(record.infeasible), double(record.abandoned), double(record.migrants_in)}}};
+  store::Block log{"brdf", "log", {0}, {1}};
+  append_log_row(log, record.generation, id.item, record.statistics, record.migrants_in);
+  return {log};
 }
 
 std::vector<store::Block> BrdfSearchWorkload::front_blocks(WorkItemId id, const Bytes& result) const {

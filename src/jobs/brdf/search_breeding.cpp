@@ -47,12 +47,7 @@ void record_statistics(const std::vector<Evaluated>& members, BreedRecord& recor
   std::vector<double> errors, sizes;
   std::vector<std::uint8_t> abandoned;
   for (const auto& m : members) errors.push_back(m.error), sizes.push_back(m.size), abandoned.push_back(m.abandoned);
-  const auto s = island_statistics(errors, sizes, abandoned);
-  record.best_error = s.best_error;
-  record.median_error = s.median_error;
-  record.median_size = s.median_size;
-  record.infeasible = s.infeasible;
-  record.abandoned = s.abandoned;
+  record.statistics = island_statistics(errors, sizes, abandoned);
 }
 
 }  // namespace

@@ -55,7 +55,7 @@ double BrdfSearchWorkload::abandon_threshold(std::uint32_t breeding_stage, const
   if (!settings_.abandon_poor || generation_of(breeding_stage) == 0) return gp::worst_error;
   double threshold = 0.0;
   for (std::uint64_t i = 0; i < settings_.islands; ++i)
-    threshold = std::max(threshold, decode_breed(kept_result(kept, {breeding_stage, i})).median_error);
+    threshold = std::max(threshold, decode_breed(kept_result(kept, {breeding_stage, i})).statistics.median_error);
   return threshold;
 }
 

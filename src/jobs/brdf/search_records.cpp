@@ -9,6 +9,35 @@
 
 namespace pbrfit::jobs::brdf {
 
+namespace {
+
+void write_statistics(ByteWriter& out, const IslandStatistics& s) {
+  out.put(s.best_error);
+  out.put(s.median_error);
+  out.put(s.median_size);
+  out.put(s.infeasible);
+  out.put(s.abandoned);
+}
+
+IslandStatistics read_statistics(ByteReader& in) {
+  IslandStatistics s;
+  s.best_error = in.get<double>();
+  s.median_error = in.get<double>();
+  s.median_size = in.get<double>();
+  s.infeasible = in.get<std::uint32_t>();
+  s.abandoned = in.get<std::uint32_t>();
+  return s;
+}
+
+double median(std::span<const double> values) {
+  if (values.empty()) return 0.0;
+  std::vector<double> sorted(values.begin(), values.end());
+  std::nth_element(sorted.begin(), sorted.begin() + std::ptrdiff_t(sorted.size() / 2), sorted.end());
+  return sorted[sorted.size() / 2];
+}
+
+}  // namespace
+
 const Bytes& kept_result(const ItemResults& kept, WorkItemId id) {
   const auto found = kept.find(id);
   if (found == kept.end()) throw std::logic_error("brdf search: a result of the generation before was not kept");
@@ -21,11 +50,7 @@ Bytes encode(const BreedRecord& r) {
   for (const auto& g : r.genomes) write_genome(out, g);
   for (const auto& t : r.trees) write_tree(out, t);
   out.put_varint(r.generation);
-  out.put(r.best_error);
-  out.put(r.median_error);
-  out.put(r.median_size);
-  out.put(r.infeasible);
-  out.put(r.abandoned);
+  write_statistics(out, r.statistics);
   out.put(r.migrants_in);
   return out.take();
 }
@@ -38,11 +63,7 @@ BreedRecord decode_breed(const Bytes& bytes) {
     for (std::uint64_t k = 0; k < n; ++k) r.genomes.push_back(read_genome(in));
     for (std::uint64_t k = 0; k < n; ++k) r.trees.push_back(read_tree(in, brdf_input_count, brdf_parameter_count));
     r.generation = in.get_varint();
-    r.best_error = in.get<double>();
-    r.median_error = in.get<double>();
-    r.median_size = in.get<double>();
-    r.infeasible = in.get<std::uint32_t>();
-    r.abandoned = in.get<std::uint32_t>();
+    r.statistics = read_statistics(in);
     r.migrants_in = in.get<std::uint32_t>();
     return r;
   });
@@ -70,17 +91,6 @@ EvaluationRecord decode_evaluation(const Bytes& bytes) {
   });
 }
 
-namespace {
-
-double median(std::span<const double> values) {
-  if (values.empty()) return 0.0;
-  std::vector<double> sorted(values.begin(), values.end());
-  std::nth_element(sorted.begin(), sorted.begin() + std::ptrdiff_t(sorted.size() / 2), sorted.end());
-  return sorted[sorted.size() / 2];
-}
-
-}  // namespace
-
 IslandStatistics island_statistics(std::span<const double> errors, std::span<const double> sizes,
                                    std::span<const std::uint8_t> abandoned) {
   IslandStatistics out;
@@ -100,13 +110,7 @@ Bytes encode(const FrontRecord& r) {
   write_scored(out, r.additions);
   write_scored(out, r.simplified);
   out.put_varint(r.last_generation.size());
-  for (const auto& s : r.last_generation) {
-    out.put(s.best_error);
-    out.put(s.median_error);
-    out.put(s.median_size);
-    out.put(s.infeasible);
-    out.put(s.abandoned);
-  }
+  for (const auto& s : r.last_generation) write_statistics(out, s);
   return out.take();
 }
 
@@ -118,15 +122,7 @@ FrontRecord decode_front(const Bytes& bytes, std::size_t inputs, std::size_t par
     r.simplified = read_scored(in, inputs, parameters);
     const auto islands = in.get_varint();
     if (islands > in.remaining()) throw ByteFormatError(in.offset(), "more islands than bytes");
-    for (std::uint64_t k = 0; k < islands; ++k) {
-      IslandStatistics s;
-      s.best_error = in.get<double>();
-      s.median_error = in.get<double>();
-      s.median_size = in.get<double>();
-      s.infeasible = in.get<std::uint32_t>();
-      s.abandoned = in.get<std::uint32_t>();
-      r.last_generation.push_back(s);
-    }
+    for (std::uint64_t k = 0; k < islands; ++k) r.last_generation.push_back(read_statistics(in));
     return r;
   });
 }

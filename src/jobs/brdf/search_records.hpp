@@ -11,17 +11,24 @@
 
 namespace pbrfit::jobs::brdf {
 
+// The log's figures of one island's evaluated generation.
+struct IslandStatistics {
+  double best_error = gp::worst_error;    // over the finite errors of complete fits
+  double median_error = gp::worst_error;  // over every member, abandoned ones at their lower bound
+  double median_size = 0.0;
+  std::uint32_t infeasible = 0;  // members whose error is not finite
+  std::uint32_t abandoned = 0;   // members whose fits were abandoned
+};
+IslandStatistics island_statistics(std::span<const double> errors, std::span<const double> sizes,
+                                   std::span<const std::uint8_t> abandoned);
+
 // A breeding item of an island: the next generation's genomes and their trees, and the statistics of the
 // generation they came from.
 struct BreedRecord {
   std::vector<gp::Genome> genomes;
   std::vector<gp::SyntaxTree> trees;
   std::uint64_t generation = 0;  // the generation the statistics describe (0 before any evaluation)
-  double best_error = gp::worst_error;
-  double median_error = gp::worst_error;  // over every member, abandoned ones at their lower bound
-  double median_size = 0.0;
-  std::uint32_t infeasible = 0;
-  std::uint32_t abandoned = 0;
+  IslandStatistics statistics;
   std::uint32_t migrants_in = 0;
 };
 
@@ -34,17 +41,6 @@ struct EvaluationRecord {
 };
 
 // The front item: the Pareto front so far and what entered it at this step.
-// The log's figures of one island's evaluated generation.
-struct IslandStatistics {
-  double best_error = gp::worst_error;  // over the finite errors of complete fits
-  double median_error = gp::worst_error;
-  double median_size = 0.0;
-  std::uint32_t infeasible = 0;  // members whose error is not finite
-  std::uint32_t abandoned = 0;   // members whose fits were abandoned
-};
-IslandStatistics island_statistics(std::span<const double> errors, std::span<const double> sizes,
-                                   std::span<const std::uint8_t> abandoned);
-
 struct FrontRecord {
   std::vector<ScoredTree> front, additions;
   std::vector<ScoredTree> simplified;            // the last stage only: the knee before and after culling
