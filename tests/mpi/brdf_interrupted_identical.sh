@@ -5,7 +5,7 @@ source "$(dirname "$0")/lib/common.bash"
 
 job_from tests/jobs/small-brdf.yaml job.yaml 's/^  generations: 4/  generations: 30/' 's/^  population: 8/  population: 64/' \
   's/^output: result.h5/output: result.h5\ncheckpoint: {interval_seconds: 0.2, interval_items: 2}/' \
-  's/starts: 2, evaluations_per_start: 60/starts: 32, evaluations_per_start: 2000/'
+  's/starts: 2, evaluations_per_start: 60/starts: 96, evaluations_per_start: 2000/'  # materials of ~5 s: room to stop among them
 note "uninterrupted reference on 2 ranks"
 run_ranks 2 run job.yaml --output reference.h5 -q
 expect_status 0
