@@ -10,7 +10,7 @@ namespace pbrfit::gp {
 template <class T>
 ParameterFitResult fit_parameters(const Program& program, std::span<const std::vector<ConstantSlot>> slots,
                                   BatchInterpreter<T>& interpreter, const ParameterFitOptions& options,
-                                  const RandomStream& random) {
+                                  const RandomStream& random, std::span<const double> previous) {
   const std::size_t n = slots.size();
   optimize::Bounds box{std::vector<double>(n, 0.0), std::vector<double>(n, 0.0)};
   for (std::size_t k = 0; k < n; ++k)
@@ -30,8 +30,11 @@ ParameterFitResult fit_parameters(const Program& program, std::span<const std::v
   for (std::size_t s = 0; s < options.starts; ++s) {
     RandomStream draw = random.derive(s);
     std::vector<double> start(n, 0.0);
+    const bool warm = s == 0 && options.warm_start && previous.size() == n;
     for (std::size_t k = 0; k < n; ++k)
-      if (!slots[k].empty()) start[k] = options.start_lower + (options.start_upper - options.start_lower) * draw.uniform();
+      if (!slots[k].empty())
+        start[k] = warm ? std::clamp(previous[k], options.lower, options.upper)
+                        : options.start_lower + (options.start_upper - options.start_lower) * draw.uniform();
     const auto run = optimize::nelder_mead(error, box, start, search, options.evaluations_per_start);
     if (!run.best.x.empty() && run.best.value < best.error) best = {run.best.x, run.best.value, 0};
   }
@@ -40,8 +43,10 @@ ParameterFitResult fit_parameters(const Program& program, std::span<const std::v
 }
 
 template ParameterFitResult fit_parameters<float>(const Program&, std::span<const std::vector<ConstantSlot>>,
-                                                  BatchInterpreter<float>&, const ParameterFitOptions&, const RandomStream&);
+                                                  BatchInterpreter<float>&, const ParameterFitOptions&, const RandomStream&,
+                                                  std::span<const double>);
 template ParameterFitResult fit_parameters<double>(const Program&, std::span<const std::vector<ConstantSlot>>,
-                                                   BatchInterpreter<double>&, const ParameterFitOptions&, const RandomStream&);
+                                                   BatchInterpreter<double>&, const ParameterFitOptions&, const RandomStream&,
+                                                   std::span<const double>);
 
 }  // namespace pbrfit::gp

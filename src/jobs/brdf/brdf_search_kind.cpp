@@ -45,7 +45,7 @@ gp::EditGrammar grammar_of(const spec::Section& s, const gp::SyntaxTree& seed) {
 gp::ParameterFitOptions fit_of(const spec::Section& s) {
   gp::ParameterFitOptions f{std::size_t(s.get_int("starts")), std::size_t(s.get_int("evaluations_per_start")),
                             s.get_number("lower"), s.get_number("upper"), s.get_number("start_lower"),
-                            s.get_number("start_upper")};
+                            s.get_number("start_upper"), s.get_bool("warm_start")};
   if (f.lower >= f.upper) s.reject("upper", "must be above 'lower'");
   if (f.start_lower > f.start_upper) s.reject("start_upper", "must be at least 'start_lower'");
   if (f.start_lower < f.lower || f.start_upper > f.upper) s.reject("start_lower", "starts must lie within [lower, upper]");

@@ -26,6 +26,8 @@ spec::Schema fit_schema(int64_t starts, int64_t evaluations) {
   s.number("upper", "see lower").defaults_to(20.0);
   s.number("start_lower", "random starts are uniform in [start_lower, start_upper]").defaults_to(0.0);
   s.number("start_upper", "see start_lower").defaults_to(1.0);
+  s.boolean("warm_start", "the first search of each fit starts from the previous channel's or material's fit")
+      .defaults_to(true);
   return s;
 }
 
@@ -76,7 +78,7 @@ spec::Schema brdf_search_schema() {
   s.boolean("abandon_poor", "stop fitting a candidate once its error on the first materials exceeds the "
             "previous generation's median (its error is then a lower bound; it stays out of the front)")
       .defaults_to(true);
-  s.section("fit", fit_schema(4, 100), "the parameter fits of the search");
+  s.section("fit", fit_schema(3, 100), "the parameter fits of the search");
   s.section("evaluate", evaluation_schema(), "the evaluation after the search");
   return s;
 }

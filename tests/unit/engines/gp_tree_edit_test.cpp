@@ -115,4 +115,18 @@ TEST_CASE("parameters are fitted by Nelder-Mead from random starts") {
   CHECK(std::abs(fit.parameters[0] - 0.7) < 1e-4);
   CHECK(std::abs(fit.parameters[1] - 3.0) < 1e-3);
   CHECK(fit.evaluations <= options.starts * options.evaluations_per_start);
+
+  SECTION("a warm start begins the first search at the previous fit's point") {
+    options.starts = 1;
+    options.evaluations_per_start = 1;
+    const std::vector<double> previous = {0.7, 3.0};
+    const auto warm = fit_parameters(model.program, model.parameter_slots, interpreter, options, RandomStream(1, 0), previous);
+    CHECK(warm.error < 1e-6);
+    CHECK(warm.parameters == previous);
+    options.warm_start = false;
+    const auto cold = fit_parameters(model.program, model.parameter_slots, interpreter, options, RandomStream(1, 0), previous);
+    CHECK(cold.error > 1e-3);
+    const auto unseeded = fit_parameters(model.program, model.parameter_slots, interpreter, options, RandomStream(1, 0));
+    CHECK(cold.parameters == unseeded.parameters);
+  }
 }

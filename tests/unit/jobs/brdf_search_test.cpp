@@ -112,6 +112,18 @@ TEST_CASE("Cook-Torrance fits a material made from Cook-Torrance far better than
   CHECK(again.parameters == fit.parameters);
 }
 
+TEST_CASE("each fit's first search starts from the fit before it, unless warm starts are off") {
+  const MetricData data(small_scene().table, {cook_torrance_material(), cook_torrance_material()}, {"a", "b"});
+  gp::ParameterFitOptions one_evaluation{1, 1};  // each search evaluates its start only
+  const auto warm = score_candidate(compiled(tree_of_text("p0 * nl")), data, one_evaluation, RandomStream(3, 0));
+  REQUIRE(warm.parameters.size() == 6);
+  for (std::size_t k = 1; k < 6; ++k) CHECK(warm.parameters[k] == warm.parameters[0]);
+  one_evaluation.warm_start = false;
+  const auto cold = score_candidate(compiled(tree_of_text("p0 * nl")), data, one_evaluation, RandomStream(3, 0));
+  CHECK(cold.parameters[0] == warm.parameters[0]);  // the first fit has no fit before it
+  CHECK(cold.parameters[1] != cold.parameters[0]);
+}
+
 TEST_CASE("evaluating a material renders it measured and fitted, and compares the renders") {
   const std::vector<gp::SyntaxTree> models = {cook_torrance(), tree_of_text("p0")};
   const auto result = evaluate_on_material(small_scene(), small_scene(), cook_torrance_material(), "ct", models,

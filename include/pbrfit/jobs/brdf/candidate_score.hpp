@@ -5,6 +5,9 @@
 // once per fit (gp/fixed_part.hpp); the per-fit error sqrt(S') combined by the L2 norm over channels and
 // materials.
 //
+// Fits run in the order material by material, channel by channel; with warm_start each one's first search
+// begins at the parameters of the fit before it.
+//
 // Contract: deterministic for the same stream key (fit m, c draws from random.derive(3 m + c)); a candidate
 // with a non-finite error on any fit scores worst_error (the remaining fits are skipped). When the error of
 // the materials fitted so far exceeds abandon_above, the rest are skipped too: the score is then
