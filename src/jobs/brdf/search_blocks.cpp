@@ -3,9 +3,9 @@
 // the end.
 #include <limits>
 
-#include "pbrfit/gp/knee.hpp"
 #include "pbrfit/jobs/brdf/brdf_inputs.hpp"
 #include "pbrfit/jobs/brdf/brdf_search_workload.hpp"
+#include "front_knee.hpp"
 #include "search_records.hpp"
 
 namespace pbrfit::jobs::brdf {
@@ -57,9 +57,7 @@ std::vector<store::Block> BrdfSearchWorkload::front_blocks(WorkItemId id, const 
   }
   if (id.stage == front_stage() && !record.last_generation.empty()) out.push_back(last_log_block(record, settings_.generations - 1));
   if (id.stage != front_stage() || record.front.empty()) return out;
-  std::vector<gp::Fitness> fitness;
-  for (const auto& f : record.front) fitness.push_back({f.error, f.size(), 0.0, true});
-  const std::size_t knee = gp::knee_index(fitness);
+  const std::size_t knee = front_knee(record.front);
   store::Block front{"brdf", "front", {0}, {record.front.size()}};
   for (std::size_t k = 0; k < record.front.size(); ++k) {
     const auto& f = record.front[k];

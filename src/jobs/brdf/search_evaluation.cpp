@@ -4,9 +4,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "pbrfit/gp/knee.hpp"
 #include "pbrfit/jobs/brdf/brdf_inputs.hpp"
 #include "pbrfit/jobs/brdf/brdf_search_workload.hpp"
+#include "front_knee.hpp"
 #include "search_records.hpp"
 
 namespace pbrfit::jobs::brdf {
@@ -30,9 +30,7 @@ const ScoredTree& comparable(const std::vector<ScoredTree>& front, double max_si
 
 const ScoredTree& knee(const FrontRecord& record) {
   if (!record.simplified.empty()) return record.simplified.back();
-  std::vector<gp::Fitness> fitness;
-  for (const auto& f : record.front) fitness.push_back({f.error, f.size(), 0.0, true});
-  return record.front[gp::knee_index(fitness)];
+  return record.front[front_knee(record.front)];
 }
 
 double mean(const std::vector<double>& values) {

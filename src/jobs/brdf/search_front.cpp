@@ -4,10 +4,10 @@
 #include <span>
 #include <stdexcept>
 
-#include "pbrfit/gp/knee.hpp"
 #include "pbrfit/jobs/brdf/brdf_inputs.hpp"
 #include "pbrfit/jobs/brdf/candidate_score.hpp"
 #include "pbrfit/jobs/brdf/brdf_search_workload.hpp"
+#include "front_knee.hpp"
 #include "search_records.hpp"
 
 namespace pbrfit::jobs::brdf {
@@ -84,9 +84,7 @@ Bytes BrdfSearchWorkload::keep_front(const runtime::ItemTask& task) const {
   FrontRecord record = merged(previous.front, candidates, abandoned);
   if (task.id.stage == front_stage()) record.last_generation = last_statistics(candidates, abandoned, settings_.population);
   if (task.id.stage == front_stage() && !record.front.empty()) {
-    std::vector<gp::Fitness> fitness;
-    for (const auto& f : record.front) fitness.push_back({f.error, f.size(), 0.0, true});
-    const ScoredTree& knee = record.front[gp::knee_index(fitness)];
+    const ScoredTree& knee = record.front[front_knee(record.front)];
     record.simplified = {knee, cull(knee, task)};
   }
   return encode(record);

@@ -10,6 +10,7 @@
 #include "pbrfit/brdf/merl_tabulation.hpp"
 #include "pbrfit/core/bytes.hpp"
 #include "pbrfit/gp/expression_parser.hpp"
+#include "pbrfit/gp/knee.hpp"
 #include "pbrfit/jobs/brdf/analytic_brdf.hpp"
 #include "pbrfit/jobs/brdf/brdf_inputs.hpp"
 #include "pbrfit/jobs/brdf/candidate_score.hpp"
@@ -18,6 +19,7 @@
 #include "pbrfit/jobs/brdf/seed_brdfs.hpp"
 #include "pbrfit/jobs/brdf/tree_bytes.hpp"
 #include "pbrfit/render/procedural_environments.hpp"
+#include "front_knee.hpp"  // private to the brdf jobs (src/jobs/brdf)
 
 using namespace pbrfit;
 using namespace pbrfit::jobs::brdf;
@@ -122,6 +124,29 @@ TEST_CASE("each fit's first search starts from the fit before it, unless warm st
   const auto cold = score_candidate(compiled(tree_of_text("p0 * nl")), data, one_evaluation, RandomStream(3, 0));
   CHECK(cold.parameters[0] == warm.parameters[0]);  // the first fit has no fit before it
   CHECK(cold.parameters[1] != cold.parameters[0]);
+}
+
+TEST_CASE("the knee of a search's front is a BRDF, not the fitted constant at its cheap end") {
+  // Shaped like a real metal front: a parameter-free tree, a fitted constant, then slowly better BRDFs.
+  const std::vector<std::pair<const char*, double>> members = {
+      {"1", 799.0}, {"p0 + 1", 64.0}, {"p0 * nl + p1", 50.0}, {"p0 * pow(nh, p1) + p2", 30.0},
+      {"p0 * pow(nh, p1) + p2 * nl", 15.0}, {"(p0 * pow(nh, p1) + p2 * nl) / (nl + nv + p3)", 10.0}};
+  std::vector<ScoredTree> front;
+  std::vector<gp::Fitness> fitness;
+  for (const auto& [text, error] : members) {
+    front.push_back({tree_of_text(text), error, 0});
+    fitness.push_back({error, front.back().size(), 0.0, true});
+  }
+  for (std::size_t k = 1; k < front.size(); ++k) REQUIRE(front[k].size() > front[k - 1].size());
+  CHECK(gp::knee_index(fitness) == 1);  // over the whole front the constant p0 + 1 is the knee
+  CHECK(front_knee(front) == 4);        // over the members that beat it: the 9-node BRDF
+  SECTION("a front without input-free members is taken whole") {
+    const std::span<const ScoredTree> real = std::span(front).subspan(2);
+    CHECK(front_knee(real) == gp::knee_index(std::span(fitness).subspan(2)));
+  }
+  SECTION("so is a front of constants only") {
+    CHECK(front_knee(std::span(front).first(2)) == gp::knee_index(std::span(fitness).first(2)));
+  }
 }
 
 TEST_CASE("evaluating a material renders it measured and fitted, and compares the renders") {

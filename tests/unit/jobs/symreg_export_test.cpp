@@ -5,6 +5,9 @@
 #include <catch2/matchers/catch_matchers_string.hpp>
 
 #include <filesystem>
+#include <string>
+
+#include <unistd.h>
 
 #include "pbrfit/core/error.hpp"
 #include "pbrfit/jobs/job_kinds.hpp"
@@ -34,10 +37,21 @@ symreg:
   anchors: [{name: exact, expression: "sin(x*x) * cos(x) - 1"}]
 )";
 
+// One directory per process, removed when it ends: ctest -j runs this file's test cases side by side,
+// each writing the same names.
+struct ScratchDirectory {
+  std::filesystem::path path =
+      std::filesystem::temp_directory_path() / ("pbrfit-jobs-tests-" + std::to_string(::getpid()));
+  ~ScratchDirectory() {
+    std::error_code ignored;
+    std::filesystem::remove_all(path, ignored);
+  }
+};
+
 std::string result_path(const char* name) {
-  const auto dir = std::filesystem::temp_directory_path() / "pbrfit-jobs-tests";
-  std::filesystem::create_directories(dir);
-  return (dir / name).string();
+  static const ScratchDirectory scratch;
+  std::filesystem::create_directories(scratch.path);
+  return (scratch.path / name).string();
 }
 
 // Runs every stage in process; the file gets the last stage's blocks (fronts, anchors, predictions) only
