@@ -12,11 +12,11 @@ expect_status 0
 total=$("$PBRFIT" status reference.h5 | sed -n 's/^progress: *[0-9]* of \([0-9]*\).*/\1/p')
 
 note "SIGTERM during the search"
-interrupt_after 150 TERM 2 run job.yaml -q
+interrupt_after 150 TERM 2 run job.yaml
 note "resume on 1 rank, then SIGKILL"
-interrupt_after $(($(items_done result.h5) + 300)) KILL 1 run job.yaml --resume -q
+interrupt_after $(($(items_done result.h5) + 300)) KILL 1 run job.yaml --resume
 note "resume on 2 ranks, SIGTERM in the evaluation of the materials"
-interrupt_after $((total - 4)) TERM 2 run job.yaml --resume -q
+interrupt_after $((total - 4)) TERM 2 run job.yaml --resume
 
 note "resume to completion on 2 ranks"
 run_ranks 2 run job.yaml --resume -q

@@ -30,8 +30,8 @@ sed -e 's|distances: \[1, 4, 16\]|distances: [1, 2, 4, 8, 16, 32]|' -e 's|resolu
   -e 's|^output: render.h5|output: result.h5\ncheckpoint: {interval_seconds: 0.2, interval_items: 1}|' render.yaml >long.yaml
 run_ranks 2 run long.yaml --output long-ref.h5 -q
 expect_status 0
-interrupt_after 2 TERM 2 run long.yaml -q
-interrupt_after $(($(items_done result.h5) + 2)) KILL 1 run long.yaml --resume -q
+interrupt_after 2 TERM 2 run long.yaml
+interrupt_after $(($(items_done result.h5) + 2)) KILL 1 run long.yaml --resume
 run_ranks 2 run long.yaml --resume -q
 expect_status 0
 expect_identical long-ref.h5 result.h5 /ebrdf_render

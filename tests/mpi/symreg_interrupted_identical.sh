@@ -24,9 +24,9 @@ run_ranks 2 run job.yaml --output reference.h5 -q
 expect_status 0
 
 note "SIGTERM after a few epochs"
-interrupt_after 40 TERM 2 run job.yaml -q
+interrupt_after 40 TERM 2 run job.yaml
 note "resume on 1 rank, then SIGKILL"
-interrupt_after $(($(items_done result.h5) + 40)) KILL 1 run job.yaml --resume -q
+interrupt_after $(($(items_done result.h5) + 40)) KILL 1 run job.yaml --resume
 
 note "resume to completion on 2 ranks"
 run_ranks 2 run job.yaml --resume -q

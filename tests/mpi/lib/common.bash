@@ -79,19 +79,35 @@ wait_for_items() {
   fail "timed out waiting for $wanted items in $file"
 }
 
-# Runs `pbrfit ARGS` on N ranks in the background until result.h5 reports ITEMS finished items, then
-# stops it: SIGNAL TERM or INT goes to the ranks (which must exit 75), KILL to the whole session.
+# Waits until the verbose log of the background job reports a checkpoint of at least N finished items.
+# Rank 0 logs its own state there, while the published result file that `pbrfit status` reads may lag by
+# many seconds on a slow disk (publication gives copying at most 5 % of the time): a short job can end
+# before its published progress reaches N.
+wait_for_checkpoint() {
+  local log=$1 wanted=$2 deadline=$((SECONDS + 120)) saved
+  while (( SECONDS < deadline )); do
+    saved=$(sed -n 's/.*checkpoint written: \([0-9]*\) of .*/\1/p' "$log" | tail -n 1)
+    if [[ -n "$saved" ]] && (( saved >= wanted )); then return 0; fi
+    background_running || { tail -n 5 "$log"; fail "the job ended before a checkpoint of $wanted items"; }
+    sleep 0.05
+  done
+  fail "timed out waiting for a checkpoint of $wanted items in $log"
+}
+
+# Runs `pbrfit ARGS --verbose` on N ranks in the background (log in run.log) until rank 0 has checkpointed
+# ITEMS finished items, then stops it: SIGNAL TERM or INT goes to the ranks (which must exit 75), KILL to
+# the whole session. The job must checkpoint often (its checkpoint section), and ARGS must not hold -q.
 interrupt_after() {
   local items=$1 signal=$2 ranks=$3; shift 3
-  start_ranks "$ranks" "$@"
-  wait_for_items result.h5 "$items"
+  start_ranks "$ranks" "$@" --verbose >run.log 2>&1
+  wait_for_checkpoint run.log "$items"
   if [[ $signal == KILL ]]; then
     kill_session KILL
     wait_background
   else
     kill "-$signal" $(rank_pids)
     wait_background
-    [[ $STATUS -ne 0 ]] || fail "the job completed before SIG$signal reached its ranks: result.h5 showed $items items only then"
+    [[ $STATUS -ne 0 ]] || fail "the job completed before SIG$signal reached its ranks, checkpointed at $items items"
     expect_status 75 "ranks stopped by SIG$signal"
   fi
 }
