@@ -30,7 +30,9 @@ assert np.all(log["abandoned"][log["generation"] == 0] == 0), "generation 0 has 
 assert log["abandoned"][log["generation"] > 0].sum() > 0, "no fit was abandoned"
 e = f["brdf/evaluation"]
 models = [m.decode() for m in e["models"]["model"]]
-assert models[0] == "cook_torrance", models
+assert models[:2] == ["cook_torrance", "ggx_smith"], models      # the seed, then the reference
+assert np.all(np.isnan(e["models"]["training_error"][:2])), "the seed and the reference were not searched"
+assert np.all(np.isfinite(e["models"]["training_error"][2:]))
 rows = e["materials"][...]
 assert len(rows) == 4 * len(models), len(rows)             # 2 training + 2 testing materials
 assert set(r.decode() for r in rows["set"]) == {"training", "testing"}

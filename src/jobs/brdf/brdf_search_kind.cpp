@@ -67,9 +67,22 @@ void check_readable(const spec::Section& s, const std::string& key, const std::v
       s.reject(key, "names " + name + ", but " + path + " cannot be read");
 }
 
+std::vector<ReferenceBrdf> references_of(const spec::Section& s) {
+  const auto& e = s.get_section("evaluate");
+  std::vector<ReferenceBrdf> out;
+  for (const auto& name : e.get_string_list("references")) {
+    if (name == s.get_string("seed_brdf")) e.reject("references", "names the seed, " + name + ", which is always evaluated");
+    for (const auto& r : out)
+      if (r.name == name) e.reject("references", "names " + name + " twice");
+    out.push_back({name, seed_tree(name)});
+  }
+  return out;
+}
+
 EvaluationSettings evaluation_of(const spec::Section& s, const MaterialSource& source) {
   const auto& e = s.get_section("evaluate");
   EvaluationSettings out;
+  out.references = references_of(s);
   out.enabled = e.get_bool("enabled");
   out.training = materials_of(s, "training");
   out.testing = materials_of(s, "testing");

@@ -34,6 +34,9 @@ spec::Schema fit_schema(int64_t starts, int64_t evaluations) {
 spec::Schema evaluation_schema() {
   spec::Schema s("evaluate");
   s.boolean("enabled", "fit, render and compare the seed and the found BRDFs after the search").defaults_to(true);
+  s.string_list("references", 0, 8, "named BRDFs fitted, rendered and compared beside the seed, never searched "
+                "(the paper's own: brady_metal, brady_dielectric)", seed_names())
+      .defaults_to(std::vector<std::string>{});
   s.string_list("members", 0, 3, "the front members evaluated beside the seed", {"comparable", "knee", "best"})
       .defaults_to(std::vector<std::string>{"comparable", "knee"});
   s.number("comparable_size", "`comparable`: the most accurate member at most this many times the seed's size")

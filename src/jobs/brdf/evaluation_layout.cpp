@@ -31,7 +31,7 @@ store::Group BrdfSearchWorkload::evaluation_group() const {
   images.insert(images.end(), names.begin(), names.end());
   store::Group g;
   g.name = evaluation;
-  g.description = "the seed and chosen front members fitted to the training and testing materials, rendered on the "
+  g.description = "the seed, the references and chosen front members fitted to the training and testing materials, rendered on the "
                   "sphere under the scene's light and compared with the measured renders (Brady et al., section 4)";
   g.attributes = {{"materials", joined(materials)},
                   {"training_materials", joined(e.training)},
@@ -53,10 +53,10 @@ store::Group BrdfSearchWorkload::evaluation_group() const {
   store::Table parameters{"parameters", {"material", "model", "channel", "parameter"},
                           "each model's parameters fitted to each material and channel", ValueType::f64};
   g.tables = {
-      records("models", "model", "what was evaluated: the seed, then the chosen members of the front",
+      records("models", "model", "what was evaluated: the seed, the references, then the chosen members of the front",
               {{"model", ValueType::text, "its name in `models`"}, {"expression", ValueType::text, "the BRDF"},
                {"cost", ValueType::f64, "syntax tree size (nodes)"},
-               {"training_error", ValueType::f64, "the search's error (NaN for the seed)"}}),
+               {"training_error", ValueType::f64, "the search's error (NaN for the seed and the references)"}}),
       records("materials", "row", "a row per material and model, in the order of `materials`",
               {{"material", ValueType::text, "MERL name"}, {"set", ValueType::text, "training or testing"},
                {"model", ValueType::text, "model"}, {"metric_error", ValueType::f64, "sqrt(S') over the channels"},
@@ -77,8 +77,9 @@ store::Block BrdfSearchWorkload::models_block(const FrontRecord& record) const {
   const auto models = evaluated_models(record);
   const auto names = model_names();
   store::Block block{evaluation, "models", {0}, {models.size()}};
+  const std::size_t unsearched = 1 + settings_.evaluation.references.size();
   for (std::size_t k = 0; k < models.size(); ++k) {
-    block.values.insert(block.values.end(), {models[k].size(), k == 0 ? std::nan("") : models[k].error});
+    block.values.insert(block.values.end(), {models[k].size(), k < unsearched ? std::nan("") : models[k].error});
     block.texts.insert(block.texts.end(), {names[k], expression(models[k].tree)});
   }
   return block;

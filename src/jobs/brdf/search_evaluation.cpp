@@ -1,5 +1,5 @@
-// The evaluation stages of a genBRDF search (brdf_search_workload.hpp; Brady et al., section 4): the seed
-// and the chosen front members fitted to every training and testing material and rendered, then the
+// The evaluation stages of a genBRDF search (brdf_search_workload.hpp; Brady et al., section 4): the seed,
+// the named references and the chosen front members fitted to every training and testing material and rendered, then the
 // errors averaged per material set.
 #include <algorithm>
 #include <cmath>
@@ -45,12 +45,14 @@ double reduction(double value, double baseline) { return 100.0 * (1.0 - value / 
 
 std::vector<std::string> BrdfSearchWorkload::model_names() const {
   std::vector<std::string> names = {settings_.seed_name};
+  for (const auto& r : settings_.evaluation.references) names.push_back(r.name);
   for (const auto member : settings_.evaluation.members) names.emplace_back(member_name(member));
   return names;
 }
 
 std::vector<ScoredTree> BrdfSearchWorkload::evaluated_models(const FrontRecord& record) const {
   std::vector<ScoredTree> models = {{settings_.seed, gp::worst_error, 0}};
+  for (const auto& r : settings_.evaluation.references) models.push_back({r.tree, gp::worst_error, 0});
   for (const auto member : settings_.evaluation.members) {
     if (record.front.empty()) {
       models.push_back(models.front());

@@ -57,6 +57,30 @@ const BrdfScene& small_scene() {
 
 }  // namespace
 
+TEST_CASE("the paper's found BRDFs evaluate as its equations 6 and 7 print them") {
+  const double pi = 3.141592653589793;
+  const std::vector<double> p = {0.2, 0.7, 0.4, 0.3};  // k'_d, k'_s, alpha, beta
+  const double kd = p[0], ks = p[1], alpha = p[2], beta = p[3];
+  const auto metal = analytic_brdf(compiled(tree_of_text(find_seed("brady_metal")->expression)), {p, p, p});
+  const auto dielectric = analytic_brdf(compiled(tree_of_text(find_seed("brady_dielectric")->expression)), {p, p, p});
+  for (const auto& [l, v] : {std::pair{ltc::Vector3(0.3, 0.1, 0.9), ltc::Vector3(-0.2, 0.3, 0.8)},
+                             std::pair{ltc::Vector3(0.7, 0.0, 0.4), ltc::Vector3(-0.6, 0.2, 0.5)}}) {
+    const ltc::Vector3 wi = l.normalized(), wo = v.normalized(), h = (wi + wo).normalized();
+    const double nl = wi.z(), nv = wo.z(), nh = h.z(), vh = wo.dot(h), delta = std::acos(nh);
+    const double metal_expected = kd / pi + ks * std::exp(-delta / beta) *
+                                                std::min(alpha / kd * vh, 4 * beta / (std::tan(delta) * nv * nl)) *
+                                                (alpha + std::pow(1 - vh, 5));
+    const double f = alpha + (1 - alpha) * std::pow(1 - nh, 5);
+    const double d = std::exp(-std::pow(std::tan(delta) / beta, 2)) / (beta * beta * std::pow(std::cos(delta), 4));
+    const double dielectric_expected =
+        kd * std::pow(1 + std::cos(delta), 1 - alpha) +
+        std::min(1 / std::sqrt(kd), f * d / (pi * vh * nl * nv)) * std::exp(-std::tan(delta) / ks) /
+            (alpha * alpha * (alpha + 2) * beta);
+    CHECK(std::abs(metal(wi, wo)[0] - metal_expected) < 1e-12 * metal_expected);
+    CHECK(std::abs(dielectric(wi, wo)[1] - dielectric_expected) < 1e-12 * dielectric_expected);
+  }
+}
+
 TEST_CASE("the paper's material sets: 4 training and 16 testing MERL materials each, disjoint") {
   const std::set<std::string> merl(merl_material_names().begin(), merl_material_names().end());
   CHECK(merl.size() == 100);

@@ -25,10 +25,17 @@ enum class EvaluatedMember : std::uint8_t {
   best,        // the most accurate member
 };
 
+// A named BRDF (seed_brdfs.hpp) evaluated beside the seed but never searched: the paper's own, say.
+struct ReferenceBrdf {
+  std::string name;
+  gp::SyntaxTree tree;
+};
+
 struct EvaluationSettings {
   bool enabled = true;
   std::vector<std::string> training, testing;  // material names, each set in the job's order
   MaterialSource source;
+  std::vector<ReferenceBrdf> references;  // none named the seed, none twice
   std::vector<EvaluatedMember> members = {EvaluatedMember::comparable, EvaluatedMember::knee};
   double comparable_size = 1.5;
   gp::ParameterFitOptions fit{16, 1000};

@@ -6,8 +6,14 @@
 //    F = R0 + (1 - R0)(1 - n.h)^5; f = k_d + k_s F / pi D G / (nl nv);
 //  - blinn_phong: k_d + k_s (n + 2) / (2 pi) nh^n with n = p2;
 //  - ggx_smith: k_d / pi + k_s F D G1(l) G1(v) / (4 nl nv), GGX D and separable Smith G1 with alpha = p2,
-//    Schlick F(v.h) with R0 = p3.
-// The first seed is the one edited; all of them feed the codebank of Insert edits.
+//    Schlick F(v.h) with R0 = p3;
+//  - brady_metal, brady_dielectric: the BRDFs the paper found (equations 6 and 7), p0 = k'_d, p1 = k'_s,
+//    p2 = alpha, p3 = beta: k'_d / pi + k'_s D' G' F' with D' = exp(-delta / beta),
+//    G' = min(alpha / k'_d v.h, 4 beta / (tan(delta) nv nl)), F' = alpha + (1 - v.h)^5; and
+//    k'_d (1 + cos delta)^(1 - alpha) + min(1 / sqrt(k'_d), F(alpha, n.h) D(beta) / (pi vh nl nv))
+//    exp(-tan(delta) / k'_s) / (alpha^2 (alpha + 2) beta), with F and D those of cook_torrance.
+// A job's seed is the one edited; it and its codebank feed Insert edits; any of them can be evaluated
+// beside the seed as a reference.
 #include <string>
 #include <vector>
 

@@ -69,8 +69,8 @@ def _front_parts(report, file):
     if len(front) == 0:
         return [page.paragraph("No front yet: the job has not finished its last generation.")]
     models = file["brdf/evaluation/models"][()] if "brdf/evaluation/models" in file else []
-    seed = [r["cost"] for m, r in zip(_texts(models, "model"), models) if m == "cook_torrance"] if len(models) else []
-    return _figure(report, lambda: brdf_front_figure(front, seed[0] if seed else None), "brdf/front",
+    seed_size = models[0]["cost"] if len(models) else None  # the seed is the first model evaluated
+    return _figure(report, lambda: brdf_front_figure(front, seed_size), "brdf/front",
                    f"brdf/front: {len(front)} members; the knee ringed")
 
 
