@@ -9,8 +9,8 @@ run_ranks 2 run job.yaml --output reference.h5 -q
 expect_status 0
 
 note "SIGTERM to every rank after some items: checkpoint and exit 75"
-start_ranks 2 run job.yaml
-wait_for_items result.h5 60
+start_ranks 2 run job.yaml --verbose >run.log 2>&1
+wait_for_checkpoint run.log 60
 pids=$(rank_pids)
 kill -TERM $pids
 wait_background
@@ -20,8 +20,8 @@ wait_for_state result.h5 "interrupted$"
 first_done=$("$PBRFIT" status result.h5 | sed -n 's/^progress: *\([0-9]*\) of.*/\1/p')
 
 note "resume, then SIGKILL the whole job"
-start_ranks 2 run job.yaml --resume
-wait_for_items result.h5 $((first_done + 120))
+start_ranks 2 run job.yaml --resume --verbose >run.log 2>&1
+wait_for_checkpoint run.log $((first_done + 120))
 kill_session KILL
 wait_background
 [[ -f result.h5.checkpoint ]] || fail "no checkpoint survived SIGKILL"
@@ -29,8 +29,8 @@ wait_for_state result.h5 "interrupted (the job stopped without saying so; its ch
 
 note "resume on 1 rank, then SIGINT"
 killed_done=$("$PBRFIT" status result.h5 | sed -n 's/^progress: *\([0-9]*\) of.*/\1/p')
-start_ranks 1 run job.yaml --resume
-wait_for_items result.h5 $((killed_done + 30))
+start_ranks 1 run job.yaml --resume --verbose >run.log 2>&1
+wait_for_checkpoint run.log $((killed_done + 30))
 pids=$(rank_pids)
 kill -INT $pids
 wait_background
