@@ -71,7 +71,8 @@ std::vector<ReferenceBrdf> references_of(const spec::Section& s) {
   const auto& e = s.get_section("evaluate");
   std::vector<ReferenceBrdf> out;
   for (const auto& name : e.get_string_list("references")) {
-    if (name == s.get_string("seed_brdf")) e.reject("references", "names the seed, " + name + ", which is always evaluated");
+    if (name == s.get_string("seed_brdf"))
+      e.reject("references", "names the seed, " + name + ", which is always evaluated");
     for (const auto& r : out)
       if (r.name == name) e.reject("references", "names " + name + " twice");
     out.push_back({name, seed_tree(name)});

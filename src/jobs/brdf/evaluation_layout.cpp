@@ -31,8 +31,9 @@ store::Group BrdfSearchWorkload::evaluation_group() const {
   images.insert(images.end(), names.begin(), names.end());
   store::Group g;
   g.name = evaluation;
-  g.description = "the seed, the references and chosen front members fitted to the training and testing materials, rendered on the "
-                  "sphere under the scene's light and compared with the measured renders (Brady et al., section 4)";
+  g.description = "the seed, the references and chosen front members fitted to the training and testing materials, "
+                  "rendered on the sphere under the scene's light and compared with the measured renders (Brady et al., "
+                  "section 4)";
   g.attributes = {{"materials", joined(materials)},
                   {"training_materials", joined(e.training)},
                   {"testing_materials", joined(e.testing)},

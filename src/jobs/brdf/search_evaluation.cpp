@@ -1,6 +1,6 @@
 // The evaluation stages of a genBRDF search (brdf_search_workload.hpp; Brady et al., section 4): the seed,
-// the named references and the chosen front members fitted to every training and testing material and rendered, then the
-// errors averaged per material set.
+// the named references and the chosen front members fitted to every training and testing material and
+// rendered, then the errors averaged per material set.
 #include <algorithm>
 #include <cmath>
 

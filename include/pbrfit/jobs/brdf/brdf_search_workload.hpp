@@ -69,7 +69,8 @@ class BrdfSearchWorkload final : public runtime::Workload {
   std::size_t evaluated_materials() const;
   std::string evaluated_material(std::uint64_t item) const;  // training, then testing
   std::vector<std::string> model_names() const;
-  // The seed, the references, then the chosen members of the last front (the seed again for each when the front is empty).
+  // The seed, the references, then the chosen members of the last front (the seed again for each when the
+  // front is empty).
   std::vector<ScoredTree> evaluated_models(const FrontRecord& record) const;
 
   // The bred members of the generation bred at `breeding_stage`, without errors; and the distinct trees.
