@@ -53,7 +53,10 @@ kill_group_if_running() {
 # The pbrfit processes (ranks) of the background job; fails the test when there are none.
 rank_pids() {
   local pids
-  pids=$(pgrep -s "$BACKGROUND_PID" -x pbrfit) || fail "the job's ranks are gone (did it finish too early?)"
+  pids=$(pgrep -s "$BACKGROUND_PID" -x pbrfit) || {
+    [[ -f run.log ]] && tail -n 8 run.log >&2
+    fail "the job's ranks are gone (did it finish too early?)"
+  }
   echo $pids
 }
 
@@ -107,7 +110,7 @@ interrupt_after() {
   else
     kill "-$signal" $(rank_pids)
     wait_background
-    [[ $STATUS -ne 0 ]] || fail "the job completed before SIG$signal reached its ranks, checkpointed at $items items"
+    [[ $STATUS -ne 0 ]] || { tail -n 8 run.log; fail "the job completed before SIG$signal reached its ranks, checkpointed at $items items"; }
     expect_status 75 "ranks stopped by SIG$signal"
   fi
 }
