@@ -37,7 +37,7 @@ wait_for_state result.h5 "interrupted"
 
 note "SIGSTOP rank 1: lost after --rank-timeout, checkpoint, exit 75"
 start_ranks 2 run job.yaml --resume --rank-timeout 3 2>err.txt
-done_before=$("$PBRFIT" status result.h5 | sed -n 's/^progress: *\([0-9]*\) of.*/\1/p')
+done_before=$(items_done result.h5)
 wait_for_items result.h5 $((done_before + 40))
 kill -STOP "$(pid_of_rank 1)"
 wait_bounded 40

@@ -9,32 +9,17 @@ run_ranks 2 run job.yaml --output reference.h5 -q
 expect_status 0
 
 note "SIGTERM to every rank after some items: checkpoint and exit 75"
-start_ranks 2 run job.yaml --verbose >run.log 2>&1
-wait_for_checkpoint run.log 60
-pids=$(rank_pids)
-kill -TERM $pids
-wait_background
-expect_status 75 "ranks stopped by SIGTERM"
+interrupt_after 60 TERM 2 run job.yaml
 [[ -f result.h5.checkpoint ]] || fail "no checkpoint after SIGTERM"
 wait_for_state result.h5 "interrupted$"
-first_done=$("$PBRFIT" status result.h5 | sed -n 's/^progress: *\([0-9]*\) of.*/\1/p')
 
 note "resume, then SIGKILL the whole job"
-start_ranks 2 run job.yaml --resume --verbose >run.log 2>&1
-wait_for_checkpoint run.log $((first_done + 120))
-kill_session KILL
-wait_background
+interrupt_after $(($(items_done result.h5) + 120)) KILL 2 run job.yaml --resume
 [[ -f result.h5.checkpoint ]] || fail "no checkpoint survived SIGKILL"
 wait_for_state result.h5 "interrupted (the job stopped without saying so; its checkpoint can be resumed)"
 
 note "resume on 1 rank, then SIGINT"
-killed_done=$("$PBRFIT" status result.h5 | sed -n 's/^progress: *\([0-9]*\) of.*/\1/p')
-start_ranks 1 run job.yaml --resume --verbose >run.log 2>&1
-wait_for_checkpoint run.log $((killed_done + 30))
-pids=$(rank_pids)
-kill -INT $pids
-wait_background
-expect_status 75 "rank stopped by SIGINT"
+interrupt_after $(($(items_done result.h5) + 30)) INT 1 run job.yaml --resume
 
 note "resume to completion on 2 ranks"
 run_ranks 2 run job.yaml --resume

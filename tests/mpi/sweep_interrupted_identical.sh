@@ -10,19 +10,11 @@ run_ranks 2 run job.yaml --output reference.h5 -q
 expect_status 0
 
 note "SIGTERM during level 0"
-start_ranks 2 run job.yaml --verbose >run.log 2>&1
-wait_for_checkpoint run.log 120
-kill -TERM $(rank_pids)
-wait_background
-expect_status 75 "ranks stopped by SIGTERM"
+interrupt_after 120 TERM 2 run job.yaml
 [[ -f result.h5.checkpoint ]] || fail "no checkpoint after SIGTERM"
-done_items=$("$PBRFIT" status result.h5 | sed -n 's/^progress: *\([0-9]*\) of.*/\1/p')
 
 note "resume on 1 rank, SIGKILL during level 1"
-start_ranks 1 run job.yaml --resume --verbose >run.log 2>&1
-wait_for_checkpoint run.log $((done_items + 400))
-kill_session KILL
-wait_background
+interrupt_after $(($(items_done result.h5) + 400)) KILL 1 run job.yaml --resume
 
 note "resume to completion on 2 ranks"
 run_ranks 2 run job.yaml --resume -q
