@@ -41,7 +41,7 @@ finish_and_compare() {
 fault_kill_random_rank() {
   start_ranks 2 run job.yaml -q --rank-timeout 5 2>err.txt
   sleep "$(random_delay)"
-  local pids=($(pgrep -s "$BACKGROUND_PID" -x pbrfit || true))
+  local pids=($(started_rank_pids))
   (( ${#pids[@]} )) && kill -KILL "${pids[RANDOM % ${#pids[@]}]}" 2>/dev/null || true
   wait_bounded
 }
@@ -54,7 +54,7 @@ fault_kill_every_rank() {
 fault_stop_signal() {
   start_ranks 2 run job.yaml -q 2>err.txt
   sleep "$(printf '0.%03d' $((20 + RANDOM % 980)))"
-  pkill -"$(shuf -n1 -e TERM USR1 INT)" -s "$BACKGROUND_PID" -x pbrfit 2>/dev/null || true
+  kill -"$(shuf -n1 -e TERM USR1 INT)" $(started_rank_pids) 2>/dev/null || true
   wait_bounded
 }
 fault_two_runs_one_output() {

@@ -27,11 +27,14 @@ run_ranks() {
   set -e
 }
 
-# mpirun with N ranks in the background, in its own session (so it can be killed as a whole: OpenMPI
-# gives each rank a process group of its own, but they stay in mpirun's session).
+# mpirun with N ranks in the background, in a session of its own; each rank notes its pid in $RANK_PIDS
+# (lib/as_rank.bash) before it becomes pbrfit.
+RANK_PIDS="$WORK/rank-pids.txt"
 start_ranks() {
   local ranks=$1; shift
-  setsid "$MPIEXEC" "${MPI_FLAGS[@]}" -np "$ranks" "$PBRFIT" "$@" &
+  : >"$RANK_PIDS"
+  RANK_PIDS_FILE="$RANK_PIDS" setsid "$MPIEXEC" "${MPI_FLAGS[@]}" -np "$ranks" \
+    bash "$PBRFIT_SOURCE_DIR/tests/mpi/lib/as_rank.bash" "$@" &
   BACKGROUND_PID=$!
 }
 
@@ -50,14 +53,21 @@ kill_group_if_running() {
   fi
 }
 
-# The pbrfit processes (ranks) of the background job; fails the test when there are none.
+# The pids of the background job's ranks that have started, in rank order (possibly none).
+started_rank_pids() { sort -n "$RANK_PIDS" | awk '{ print $2 }' | xargs; }
+
+# The same, failing the test when no rank has started.
 rank_pids() {
-  local pids
-  pids=$(pgrep -s "$BACKGROUND_PID" -x pbrfit) || {
-    [[ -f run.log ]] && tail -n 8 run.log >&2
-    fail "the job's ranks are gone (did it finish too early?)"
-  }
-  echo $pids
+  [[ -s "$RANK_PIDS" ]] || fail "no rank of the background job has started"
+  started_rank_pids
+}
+
+# The pid of rank R of the background job.
+pid_of_rank() {
+  local pid
+  pid=$(awk -v rank="$1" '$1 == rank { print $2 }' "$RANK_PIDS")
+  [[ -n "$pid" ]] || fail "rank $1 of the background job has not started"
+  echo "$pid"
 }
 
 # True while the background job runs (a finished job that is not yet waited for is a zombie).
@@ -67,8 +77,11 @@ background_running() {
   [[ $state != Z* ]]
 }
 
-# Sends a signal to mpirun and every rank at once.
-kill_session() { pkill "-$1" -s "$BACKGROUND_PID" 2>/dev/null || true; }
+# Sends a signal to mpirun and every rank at once (and to anything else left in mpirun's session).
+kill_session() {
+  kill "-$1" "$BACKGROUND_PID" $(started_rank_pids) 2>/dev/null || true
+  pkill "-$1" -s "$BACKGROUND_PID" 2>/dev/null || true
+}
 
 # Waits until the result file reports at least N finished items (while the job runs).
 wait_for_items() {
@@ -108,9 +121,11 @@ interrupt_after() {
     kill_session KILL
     wait_background
   else
-    kill "-$signal" $(rank_pids)
+    local pids; pids=$(rank_pids)
+    kill "-$signal" $pids || { ps -o pid,ppid,stat,etimes,args -p "$BACKGROUND_PID,${pids// /,}"; tail -n 12 run.log
+                                fail "no rank left to signal (ranks: $pids), checkpointed at $items items"; }
     wait_background
-    [[ $STATUS -ne 0 ]] || { tail -n 8 run.log; fail "the job completed before SIG$signal reached its ranks, checkpointed at $items items"; }
+    [[ $STATUS -ne 0 ]] || { tail -n 12 run.log; fail "the job completed before SIG$signal reached its ranks ($pids), checkpointed at $items items"; }
     expect_status 75 "ranks stopped by SIG$signal"
   fi
 }
