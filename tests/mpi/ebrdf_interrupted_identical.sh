@@ -13,9 +13,9 @@ total=$("$PBRFIT" status reference.h5 | sed -n 's/^progress: *[0-9]* of \([0-9]*
 note "SIGTERM early in the specular levels"
 interrupt_after 100 TERM 2 run job.yaml
 note "resume on 1 rank, then SIGKILL"
-interrupt_after $(($(items_done result.h5) + 200)) KILL 1 run job.yaml --resume
-note "resume on 2 ranks, SIGTERM in the diffuse levels"
-interrupt_after $((total - 250)) TERM 2 run job.yaml --resume
+interrupt_after $(($(items_done result.h5) + 150)) KILL 1 run job.yaml --resume
+note "resume on 2 ranks, SIGTERM again"
+interrupt_after $((total - 350)) TERM 2 run job.yaml --resume
 
 note "resume to completion on 2 ranks"
 run_ranks 2 run job.yaml --resume -q

@@ -110,6 +110,14 @@ wait_for_checkpoint() {
   fail "timed out waiting for a checkpoint of $wanted items in $log"
 }
 
+# The lines of run.log that tell when a stop was due: resumption, signals received, the first checkpoint
+# of at least N items.
+log_around_trigger() {
+  awk -v n="$1" '/resuming|received/ { print }
+                 /checkpoint written:/ && !shown { split($0, a, "checkpoint written: ")
+                                                   if (a[2] + 0 >= n) { print; shown = 1 } }' run.log
+}
+
 # Runs `pbrfit ARGS --verbose` on N ranks in the background (log in run.log) until rank 0 has checkpointed
 # ITEMS finished items, then stops it: SIGNAL TERM or INT goes to the ranks (which must exit 75), KILL to
 # the whole session. The job must checkpoint often (its checkpoint section), and ARGS must not hold -q.
@@ -124,8 +132,10 @@ interrupt_after() {
     local pids; pids=$(rank_pids)
     kill "-$signal" $pids || { ps -o pid,ppid,stat,etimes,args -p "$BACKGROUND_PID,${pids// /,}"; tail -n 12 run.log
                                 fail "no rank left to signal (ranks: $pids), checkpointed at $items items"; }
+    local signalled_at=$SECONDS
     wait_background
-    [[ $STATUS -ne 0 ]] || { tail -n 12 run.log; fail "the job completed before SIG$signal reached its ranks ($pids), checkpointed at $items items"; }
+    [[ $STATUS -ne 0 ]] || { log_around_trigger "$items"; tail -n 4 run.log
+                             fail "the job completed $((SECONDS - signalled_at)) s after SIG$signal was sent to its ranks ($pids) at a checkpoint of $items items"; }
     expect_status 75 "ranks stopped by SIG$signal"
   fi
 }
