@@ -19,8 +19,8 @@ wait_bounded() {
 }
 
 note "SIGKILL rank 1: the job ends with a checkpoint"
-start_ranks 2 run job.yaml --rank-timeout 5 --verbose >run.log 2>&1
-wait_for_checkpoint run.log 40
+start_logged_ranks 2 run job.yaml --rank-timeout 5 --verbose
+wait_for_checkpoint 40
 kill -KILL "$(pid_of_rank 1)"
 wait_bounded 40
 [[ $STATUS -ne 0 ]] || fail "the job reported success with a dead rank"
@@ -29,8 +29,8 @@ wait_for_state result.h5 "interrupted"
 
 note "SIGSTOP rank 1: lost after --rank-timeout, checkpoint, exit 75"
 done_before=$(items_done result.h5)
-start_ranks 2 run job.yaml --resume --rank-timeout 3 --verbose >run.log 2>&1
-wait_for_checkpoint run.log $((done_before + 40))
+start_logged_ranks 2 run job.yaml --resume --rank-timeout 3 --verbose
+wait_for_checkpoint $((done_before + 40))
 kill -STOP "$(pid_of_rank 1)"
 wait_bounded 40
 expect_status 75 "rank 0 after losing rank 1"

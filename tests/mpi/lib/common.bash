@@ -38,6 +38,13 @@ start_ranks() {
   BACKGROUND_PID=$!
 }
 
+# start_ranks with every rank's output (and mpirun's) appended to run.log as it is written, not forwarded
+# by mpirun: the tests that act on what the log says must see it when the ranks say it.
+start_logged_ranks() {
+  : >run.log
+  RANK_LOG="$WORK/run.log" start_ranks "$@" >>run.log 2>&1
+}
+
 wait_background() {
   set +e
   wait "$BACKGROUND_PID"
@@ -54,7 +61,11 @@ kill_group_if_running() {
 }
 
 # The pids of the background job's ranks that have started, in rank order (possibly none).
-started_rank_pids() { sort -n "$RANK_PIDS" | awk '{ print $2 }' | xargs; }
+started_rank_pids() {
+  local rank pid pids=()
+  while read -r rank pid; do pids[rank]=$pid; done <"$RANK_PIDS"
+  echo "${pids[*]}"
+}
 
 # The same, failing the test when no rank has started.
 rank_pids() {
@@ -95,19 +106,46 @@ wait_for_items() {
   fail "timed out waiting for $wanted items in $file"
 }
 
-# Waits until the verbose log of the background job reports a checkpoint of at least N finished items.
-# Rank 0 logs its own state there, while the published result file that `pbrfit status` reads may lag by
-# many seconds on a slow disk (publication gives copying at most 5 % of the time): a short job can end
-# before its published progress reaches N.
+# Sleeps without starting a process: a read that times out on a FIFO nobody writes to.
+nap() {
+  [[ -p "$WORK/.nap" ]] || mkfifo "$WORK/.nap"
+  local fifo
+  exec {fifo}<>"$WORK/.nap"
+  read -r -t "$1" -u "$fifo" || true
+  exec {fifo}>&-
+}
+
+# Waits until run.log (start_logged_ranks, --verbose) reports a checkpoint of at least N finished items,
+# and fails unless the job still runs then. Rank 0 logs its own state there, while the published result
+# file that `pbrfit status` reads may lag by many seconds on a slow disk (publication gives copying at
+# most 5 % of the time): a short job can end before its published progress reaches N.
 wait_for_checkpoint() {
-  local log=$1 wanted=$2 deadline=$((SECONDS + 120)) saved
+  local wanted=$1 deadline=$((SECONDS + 120)) saved=0 line partial="" log
+  TRIGGER_STAMP="" NEWEST_STAMP=""
+  exec {log}<run.log   # read as it grows, with builtins only: a loaded machine delays every fork
   while (( SECONDS < deadline )); do
-    saved=$(sed -n 's/.*checkpoint written: \([0-9]*\) of .*/\1/p' "$log" | tail -n 1)
-    if [[ -n "$saved" ]] && (( saved >= wanted )); then return 0; fi
-    background_running || { tail -n 5 "$log"; fail "the job ended before a checkpoint of $wanted items"; }
-    sleep 0.05
+    while IFS= read -r -u "$log" line; do
+      line=$partial$line partial=""
+      if [[ $line =~ ^\[\ *([0-9.]+)s\ r0\] ]]; then NEWEST_STAMP=${BASH_REMATCH[1]}; fi
+      if (( saved < wanted )) && [[ $line =~ checkpoint\ written:\ ([0-9]+)\ of ]]; then
+        saved=${BASH_REMATCH[1]} TRIGGER_STAMP=$NEWEST_STAMP
+      fi
+    done
+    partial+=$line   # a line still being written
+    if (( saved >= wanted )); then
+      exec {log}<&-
+      background_running || { trigger_timing "$wanted"; fail "the job had ended when its log showed a checkpoint of $wanted items"; }
+      return 0
+    fi
+    kill -0 "$BACKGROUND_PID" 2>/dev/null || { tail -n 5 run.log; fail "the job ended before a checkpoint of $wanted items"; }
+    nap 0.05
   done
-  fail "timed out waiting for a checkpoint of $wanted items in $log"
+  fail "timed out waiting for a checkpoint of $wanted items in run.log"
+}
+
+# When rank 0 logged the trigger, and its newest line the test had read by then (seconds since its start).
+trigger_timing() {
+  echo "rank 0 logged the checkpoint of $1 items at ${TRIGGER_STAMP:-?} s; the test saw it with the line of ${NEWEST_STAMP:-?} s"
 }
 
 # The lines of run.log that tell when a stop was due: resumption, signals received, the first checkpoint
@@ -123,18 +161,19 @@ log_around_trigger() {
 # the whole session. The job must checkpoint often (its checkpoint section), and ARGS must not hold -q.
 interrupt_after() {
   local items=$1 signal=$2 ranks=$3; shift 3
-  start_ranks "$ranks" "$@" --verbose >run.log 2>&1
-  wait_for_checkpoint run.log "$items"
+  start_logged_ranks "$ranks" "$@" --verbose
+  wait_for_checkpoint "$items"
   if [[ $signal == KILL ]]; then
     kill_session KILL
     wait_background
   else
     local pids; pids=$(rank_pids)
-    kill "-$signal" $pids || { ps -o pid,ppid,stat,etimes,args -p "$BACKGROUND_PID,${pids// /,}"; tail -n 12 run.log
+    kill "-$signal" $pids || { ps -o pid,ppid,stat,etimes,args -p "$BACKGROUND_PID,${pids// /,}" || true
+                                trigger_timing "$items"; tail -n 12 run.log
                                 fail "no rank left to signal (ranks: $pids), checkpointed at $items items"; }
     local signalled_at=$SECONDS
     wait_background
-    [[ $STATUS -ne 0 ]] || { log_around_trigger "$items"; tail -n 4 run.log
+    [[ $STATUS -ne 0 ]] || { log_around_trigger "$items"; trigger_timing "$items"; tail -n 4 run.log
                              fail "the job completed $((SECONDS - signalled_at)) s after SIG$signal was sent to its ranks ($pids) at a checkpoint of $items items"; }
     expect_status 75 "ranks stopped by SIG$signal"
   fi
