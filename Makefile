@@ -5,7 +5,7 @@ MPIRUN ?= mpirun
 # memory only (no probing for network transports) saves about 0.2 s of start-up on one machine.
 MPIRUN_FLAGS ?= $(if $(filter 0,$(shell id -u)),--allow-run-as-root,) --oversubscribe --mca pml ob1 --mca btl self,vader
 
-.PHONY: demo test build deps bench bench-brdf bench-ebrdf soak clean
+.PHONY: demo test build deps bench bench-ltc bench-brdf bench-ebrdf soak clean
 
 demo: build
 	$(MPIRUN) $(MPIRUN_FLAGS) -np 2 $(BUILD)/pbrfit run jobs/quickstart.yaml
@@ -27,6 +27,11 @@ bench: build
 	tests/benchmarks/runtime_state.sh $(BUILD)/tests/pbrfit_runtime_probe
 	$(BUILD)/tests/bench_optimizers
 	tests/benchmarks/sweep_benchmark.sh $(BUILD)/pbrfit
+
+# LTC tables of every built-in BRDF family, beside the published GGX table and the LTC paper's procedure
+# (about 20 minutes on 2 cores).
+bench-ltc: build
+	tests/benchmarks/ltc_families_benchmark.sh $(BUILD)
 
 # The genBRDF searches of jobs/merl-metals.yaml and jobs/merl-dielectrics.yaml (about 2 hours each on 2 cores).
 bench-brdf: build

@@ -10,7 +10,7 @@ double disney_retro_factor(double f_d90, double cosine) {
   return 1.0 + (f_d90 - 1.0) * m2 * m2 * m;
 }
 
-double disney_diffuse_cbrdf(double roughness, const ltc::Vector3& v, const ltc::Vector3& l) {
+double disney_diffuse_cbrdf(double roughness, const Vector3& v, const Vector3& l) {
   const double n_dot_l = l.z();
   if (!(n_dot_l > 0.0) || v.z() < 0.0) return 0.0;
   // (l.h)^2 = (1 + l.v) / 2 for h = normalize(v + l).

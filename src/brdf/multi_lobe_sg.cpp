@@ -17,14 +17,14 @@ std::vector<SphericalGaussian> multi_lobe_sg_lobes(const MultiLobeSgParameters& 
     const double position = 2.0 * i / (n - 1.0) - 1.0;  // -1 .. 1 across the lobes
     const double theta = position * spread + parameters.theta_center;
     const double gaussian_argument = ((i + 1.0) - 0.5 * (n + 1.0)) * position;
-    lobes[index].axis = ltc::Vector3(-std::sin(theta), 0.0, std::cos(theta));
+    lobes[index].axis = Vector3(-std::sin(theta), 0.0, std::cos(theta));
     lobes[index].sharpness = parameters.lambda;
     lobes[index].amplitude = parameters.amplitude * std::exp(-spread / 3.0 * gaussian_argument * gaussian_argument);
   }
   return lobes;
 }
 
-double multi_lobe_sg_value(const std::vector<SphericalGaussian>& lobes, const ltc::Vector3& w) {
+double multi_lobe_sg_value(const std::vector<SphericalGaussian>& lobes, const Vector3& w) {
   double sum = 0.0;
   for (const SphericalGaussian& lobe : lobes) sum += lobe.value(w);
   return sum;

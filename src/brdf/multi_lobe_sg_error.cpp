@@ -13,11 +13,11 @@ namespace {
 
 // One sampling strategy of the estimate: either the GGX target or one SG lobe.
 struct LobeStrategy {
-  const ltc::GgxTarget* target = nullptr;
+  const GgxLobe* target = nullptr;
   const SphericalGaussian* lobe = nullptr;
 
-  ltc::Vector3 sample(double u1, double u2) const { return lobe ? lobe->sample(u1, u2) : target->sample(u1, u2); }
-  double pdf(const ltc::Vector3& w) const { return lobe ? lobe->pdf(w) : target->evaluate(w).pdf; }
+  Vector3 sample(double u1, double u2) const { return lobe ? lobe->sample(u1, u2) : target->sample(u1, u2); }
+  double pdf(const Vector3& w) const { return lobe ? lobe->pdf(w) : target->evaluate(w).pdf; }
 };
 
 double albedo(double alpha, double cos_theta_view) {
@@ -36,14 +36,14 @@ MultiLobeSgError::MultiLobeSgError(double alpha, double cos_theta_view, std::siz
   if (samples_per_strategy == 0) throw std::invalid_argument("multi-lobe SG error: needs samples");
   target_integral_ = albedo(alpha, cos_theta_view);
   const LobeStrategy only_target{&target_, nullptr};
-  const auto squared = [this](const ltc::Vector3& w) {
+  const auto squared = [this](const Vector3& w) {
     const double value = target_.evaluate(w).value;
     return value * value;
   };
   target_squared_norm_ = integrate::integrate_balance_mis(squared, std::span<const LobeStrategy>(&only_target, 1),
                                                           std::span<const std::array<double, 2>>(points_));
   for (const auto& u : points_) {
-    const ltc::Vector3 w = target_.sample(u[0], u[1]);
+    const Vector3 w = target_.sample(u[0], u[1]);
     const auto t = target_.evaluate(w);
     target_samples_.push_back({w, t.value, t.pdf});
   }
@@ -51,7 +51,7 @@ MultiLobeSgError::MultiLobeSgError(double alpha, double cos_theta_view, std::siz
 
 // One lobe's constants for evaluating value and density with a single exponential.
 struct LobeTerms {
-  ltc::Vector3 axis;
+  Vector3 axis;
   double sharpness, amplitude, density_scale;  // value = amplitude e, density = density_scale e
 };
 
@@ -63,7 +63,7 @@ double MultiLobeSgError::squared_error(const MultiLobeSgParameters& parameters) 
   for (const SphericalGaussian& lobe : lobes)  // the pdf at the axis is the density's scale (exp(0) = 1)
     terms.push_back({lobe.axis, lobe.sharpness, lobe.amplitude, lobe.pdf(lobe.axis)});
   integrate::CompensatedSum sum;
-  const auto add = [&](double target_value, double target_pdf, const ltc::Vector3& w) {
+  const auto add = [&](double target_value, double target_pdf, const Vector3& w) {
     double density = target_pdf, kernel = 0.0;
     for (const LobeTerms& t : terms) {
       const double e = std::exp(-t.sharpness * (1.0 - w.dot(t.axis)));
@@ -76,7 +76,7 @@ double MultiLobeSgError::squared_error(const MultiLobeSgParameters& parameters) 
   for (const TargetSample& s : target_samples_) add(s.value, s.pdf, s.direction);
   for (const SphericalGaussian& lobe : lobes) {
     for (const auto& u : points_) {
-      const ltc::Vector3 w = lobe.sample(u[0], u[1]);
+      const Vector3 w = lobe.sample(u[0], u[1]);
       const auto t = target_.evaluate(w);
       add(t.value, t.pdf, w);
     }

@@ -7,21 +7,21 @@
 namespace pbrfit::brdf {
 
 double ProjectedLobe::density(double x, double y) const {
-  const ltc::Vector3 to_point = ltc::Vector3(x, y, 0.0) - origin;
+  const Vector3 to_point = Vector3(x, y, 0.0) - origin;
   const double r = to_point.norm();
-  const ltc::Vector3 w = to_point / r;
-  const ltc::Frame frame = ltc::Frame::from_z(axis);
+  const Vector3 w = to_point / r;
+  const Frame frame = Frame::from_z(axis);
   // rho at normal view in the lobe's frame: the view is the lobe axis itself.
-  const double rho = ggx_cosine_weighted(alpha, ltc::Vector3::UnitZ(), frame.to_local(w));
+  const double rho = ggx_cosine_weighted(alpha, Vector3::UnitZ(), frame.to_local(w));
   return rho * origin.z() / (r * r * r);
 }
 
 ProjectedLobe perpendicular_lobe(double alpha, double distance, double centre_x, double centre_y) {
-  return ProjectedLobe{alpha, ltc::Vector3(centre_x, centre_y, distance), -ltc::Vector3::UnitZ()};
+  return ProjectedLobe{alpha, Vector3(centre_x, centre_y, distance), -Vector3::UnitZ()};
 }
 
 ProjectedLobe tilted_lobe(double alpha, double angle, double distance) {
-  const ltc::Vector3 axis(std::sin(angle), 0.0, -std::cos(angle));
+  const Vector3 axis(std::sin(angle), 0.0, -std::cos(angle));
   return ProjectedLobe{alpha, -distance * axis, axis};
 }
 

@@ -6,7 +6,6 @@
 namespace pbrfit::brdf {
 namespace {
 
-using ltc::Vector3;
 
 Vector3 rotate_z(const Vector3& v, double angle) {
   const double c = std::cos(angle), s = std::sin(angle);

@@ -17,18 +17,18 @@ double soft_minimum(double x, double y, double s) {
   return smaller * std::pow(1.0 + std::pow(larger / smaller, s), 1.0 / s);
 }
 
-double roughness_modification_model(double alpha_modified, const SphereLight& light, const ltc::Vector3& view) {
+double roughness_modification_model(double alpha_modified, const SphereLight& light, const Vector3& view) {
   return ggx_cosine_weighted(alpha_modified, view, light.centre);
 }
 
 double capped_roughness_model(double alpha_modified, double cap, double smoothness, const SphereLight& light,
-                              const ltc::Vector3& view) {
+                              const Vector3& view) {
   return soft_minimum(roughness_modification_model(alpha_modified, light, view), cap, smoothness);
 }
 
-ltc::Vector3 representative_direction(const SphereLight& light, const ltc::Vector3& view, double smoothness) {
-  const ltc::Vector3 reflected = mirror_about_normal(view);  // reflect(-v, n) for n = +z
-  const ltc::Vector3 centre_to_ray = light.centre.dot(reflected) * reflected - light.centre;
+Vector3 representative_direction(const SphereLight& light, const Vector3& view, double smoothness) {
+  const Vector3 reflected = mirror_about_normal(view);  // reflect(-v, n) for n = +z
+  const Vector3 centre_to_ray = light.centre.dot(reflected) * reflected - light.centre;
   const double distance = centre_to_ray.norm();
   if (distance == 0.0) return light.centre;
   const double reach = light.radius() / distance;
@@ -43,12 +43,12 @@ double karis_sphere_normalization(double alpha, const SphereLight& light) {
 }
 
 double representative_point_model(double alpha_modified, double scale, const SphereLight& light,
-                                  const ltc::Vector3& view) {
+                                  const Vector3& view) {
   return scale * ggx_cosine_weighted(alpha_modified, view, representative_direction(light, view, 0.0));
 }
 
 double smoothed_representative_point_model(double alpha_modified, double scale, double smoothness,
-                                           const SphereLight& light, const ltc::Vector3& view) {
+                                           const SphereLight& light, const Vector3& view) {
   return scale * ggx_cosine_weighted(alpha_modified, view, representative_direction(light, view, smoothness));
 }
 

@@ -36,7 +36,7 @@ std::vector<RuleNode> composite_rule(double lo, double hi, int panels) {
 SphereLightTarget::SphereLightTarget(double alpha, const SphereLight& light, const ViewGrid& grid,
                                      const integrate::AdaptiveOptions& options)
     : alpha_(alpha), light_(light) {
-  const ltc::Frame frame = ltc::Frame::from_z(mirror_about_normal(light.centre));
+  const Frame frame = Frame::from_z(mirror_about_normal(light.centre));
   const double scale = alpha + light.radius();
   const auto radial = composite_rule(0.0, 1.0, std::max(1, grid.radial_panels));
   const auto azimuth = composite_rule(0.0, 2.0 * std::numbers::pi, std::max(1, grid.azimuth_panels));
@@ -47,7 +47,7 @@ SphereLightTarget::SphereLightTarget(double alpha, const SphereLight& light, con
     for (const RuleNode& phi : azimuth) {
       Node node;
       const double sin_theta = std::sin(theta);
-      node.view = frame.from_local(ltc::Vector3(sin_theta * std::cos(phi.x), sin_theta * std::sin(phi.x),
+      node.view = frame.from_local(Vector3(sin_theta * std::cos(phi.x), sin_theta * std::sin(phi.x),
                                                 std::cos(theta)));
       node.weight = t.weight * d_theta * sin_theta * phi.weight;
       if (node.view.z() > 0.0) {
@@ -62,7 +62,7 @@ SphereLightTarget::SphereLightTarget(double alpha, const SphereLight& light, con
   }
 }
 
-double SphereLightTarget::error(const std::function<double(const ltc::Vector3&)>& model, double p) const {
+double SphereLightTarget::error(const std::function<double(const Vector3&)>& model, double p) const {
   if (std::isinf(p)) {
     double largest = 0.0;
     for (const Node& node : nodes_) largest = std::max(largest, std::abs(node.truth - model(node.view)));
@@ -74,10 +74,10 @@ double SphereLightTarget::error(const std::function<double(const ltc::Vector3&)>
 }
 
 double SphereLightTarget::norm(double p) const {
-  return error([](const ltc::Vector3&) { return 0.0; }, p);
+  return error([](const Vector3&) { return 0.0; }, p);
 }
 
-double SphereLightTarget::least_squares_scale(const std::function<double(const ltc::Vector3&)>& model) const {
+double SphereLightTarget::least_squares_scale(const std::function<double(const Vector3&)>& model) const {
   integrate::CompensatedSum cross, square;
   for (const Node& node : nodes_) {
     const double value = model(node.view);

@@ -4,15 +4,14 @@
 #include <cmath>
 
 #include "pbrfit/ltc/clamped_cosine.hpp"
-#include "pbrfit/ltc/ggx_target.hpp"
+#include "pbrfit/brdf/ggx_lobe.hpp"
 
 namespace pbrfit::ebrdf {
 namespace {
 
-using ltc::Vector3;
 
 // A visible-normal sample of the lobe, accepted with probability rho / pdf = G2 / G1 <= 1.
-Vector3 specular_candidate(const ltc::GgxTarget& target, RandomStream& random, bool& accepted) {
+Vector3 specular_candidate(const brdf::GgxLobe& target, RandomStream& random, bool& accepted) {
   const double u1 = random.uniform();
   const Vector3 l = target.sample(u1, random.uniform());
   const auto evaluation = target.evaluate(l);
@@ -22,16 +21,16 @@ Vector3 specular_candidate(const ltc::GgxTarget& target, RandomStream& random, b
 
 }  // namespace
 
-ltc::Frame texel_frame(const Vector3& n, const Vector3& v) {
+Frame texel_frame(const Vector3& n, const Vector3& v) {
   Vector3 tangent = v - v.dot(n) * n;
-  if (tangent.norm() < 1e-9) return ltc::Frame::from_z(n);
+  if (tangent.norm() < 1e-9) return Frame::from_z(n);
   tangent.normalize();
   return {tangent, n.cross(tangent), n};
 }
 
 std::vector<Vector3> sample_base_lobe(const BaseLobe& lobe, const Vector3& normal, const Vector3& view,
                                       std::size_t count, RandomStream& random) {
-  const ltc::Frame frame = texel_frame(normal, view);
+  const Frame frame = texel_frame(normal, view);
   std::vector<Vector3> samples;
   samples.reserve(count);
   if (lobe.component == Component::diffuse) {
@@ -42,7 +41,7 @@ std::vector<Vector3> sample_base_lobe(const BaseLobe& lobe, const Vector3& norma
     return samples;
   }
   const double cos_q = std::clamp(view.dot(normal), min_view_cosine, 1.0);
-  const ltc::GgxTarget target(lobe.alpha, cos_q);
+  const brdf::GgxLobe target(lobe.alpha, cos_q);
   for (std::size_t attempt = 0; attempt < 64 * count && samples.size() < count; ++attempt) {
     bool accepted = false;
     const Vector3 l = specular_candidate(target, random, accepted);

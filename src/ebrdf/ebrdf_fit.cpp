@@ -8,16 +8,16 @@
 
 namespace pbrfit::ebrdf {
 
-ltc::Matrix3 unit_determinant(const ltc::Matrix3& m) {
+Matrix3 unit_determinant(const Matrix3& m) {
   const double determinant = std::abs(m.determinant());
   if (!(determinant > 0.0) || !std::isfinite(determinant)) return m;
   return m / std::cbrt(determinant);
 }
 
-EbrdfFit fit_ebrdf(std::span<const ltc::Vector3> samples, double amplitude, const EbrdfFitSettings& settings,
-                   RandomStream& sgd_random, const ltc::Matrix3* warm_start) {
+EbrdfFit fit_ebrdf(std::span<const Vector3> samples, double amplitude, const EbrdfFitSettings& settings,
+                   RandomStream& sgd_random, const Matrix3* warm_start) {
   EbrdfFit fit;
-  ltc::Matrix3 m;
+  Matrix3 m;
   if (settings.method == FitMethod::sgd) {
     m = ltc::sgd_fit_from_identity(samples, settings.sgd, sgd_random);
     fit.evaluations = std::uint32_t(settings.sgd.epochs);
@@ -34,9 +34,9 @@ EbrdfFit fit_ebrdf(std::span<const ltc::Vector3> samples, double amplitude, cons
     fit.evaluations = std::uint32_t(search.evaluations);
     fit.start_error = search.start_distance;
   }
-  if (!m.allFinite() || std::abs(m.determinant()) < 1e-300) m = ltc::Matrix3::Identity();
-  const ltc::Matrix3 aligned =
-      unit_determinant(ltc::align_to_samples(m, ltc::Matrix3::Identity(), ltc::cosine_samples(settings.alignment_samples)));
+  if (!m.allFinite() || std::abs(m.determinant()) < 1e-300) m = Matrix3::Identity();
+  const Matrix3 aligned =
+      unit_determinant(ltc::align_to_samples(m, Matrix3::Identity(), ltc::cosine_samples(settings.alignment_samples)));
   for (int r = 0; r < 3; ++r)
     for (int c = 0; c < 3; ++c) fit.matrix[std::size_t(3 * r + c)] = aligned(r, c);
   fit.amplitude = amplitude;
@@ -44,8 +44,8 @@ EbrdfFit fit_ebrdf(std::span<const ltc::Vector3> samples, double amplitude, cons
   return fit;
 }
 
-ltc::Matrix3 fit_matrix(const EbrdfFit& fit) {
-  ltc::Matrix3 m;
+Matrix3 fit_matrix(const EbrdfFit& fit) {
+  Matrix3 m;
   for (int r = 0; r < 3; ++r)
     for (int c = 0; c < 3; ++c) m(r, c) = fit.matrix[std::size_t(3 * r + c)];
   return m;

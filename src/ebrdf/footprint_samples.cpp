@@ -37,18 +37,18 @@ std::vector<std::size_t> FootprintSampler::contributing_texels(const MipTexel& t
   return texels;
 }
 
-std::vector<ltc::Vector3> FootprintSampler::samples(const std::vector<std::size_t>& contributing,
+std::vector<Vector3> FootprintSampler::samples(const std::vector<std::size_t>& contributing,
                                                     std::size_t view) const {
   const std::size_t per_texel = (sampling_.samples + contributing.size() - 1) / contributing.size();
-  const ltc::Vector3 v = sampling_.views.direction(view);
-  std::vector<std::vector<ltc::Vector3>> lobes;
+  const Vector3 v = sampling_.views.direction(view);
+  std::vector<std::vector<Vector3>> lobes;
   lobes.reserve(contributing.size());
   for (std::size_t t : contributing) {
     RandomStream stream(sampling_.seed, t, (component_key(sampling_.lobe.component) << 32) | view);
     lobes.push_back(sample_base_lobe(sampling_.lobe, map_.normals()[t], v, per_texel, stream));
   }
   const double phi = sampling_.views.phi(view % sampling_.views.n_phi);
-  std::vector<ltc::Vector3> pooled;
+  std::vector<Vector3> pooled;
   pooled.reserve(sampling_.samples);
   for (std::size_t round = 0; pooled.size() < sampling_.samples; ++round)
     for (std::size_t t = 0; t < lobes.size() && pooled.size() < sampling_.samples; ++t)
@@ -58,7 +58,7 @@ std::vector<ltc::Vector3> FootprintSampler::samples(const std::vector<std::size_
 
 double FootprintSampler::amplitude(const MipTexel& texel, std::size_t view) const {
   const std::size_t side = std::min(map_.size(), std::size_t(1) << texel.level);
-  const ltc::Vector3 v = sampling_.views.direction(view);
+  const Vector3 v = sampling_.views.direction(view);
   double sum = 0.0;
   for (std::size_t dy = 0; dy < side; ++dy)
     for (std::size_t dx = 0; dx < side; ++dx)

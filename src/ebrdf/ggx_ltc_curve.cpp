@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "pbrfit/brdf/ggx_lobe.hpp"
 #include "pbrfit/ltc/isotropic_fit.hpp"
 
 namespace pbrfit::ebrdf {
@@ -21,7 +22,8 @@ GgxLtcCurve::GgxLtcCurve(double alpha, std::size_t points) {
   ltc::IsotropicParameters start;
   ltc::CellFitOptions options;
   for (std::size_t i = 0; i < std::max<std::size_t>(points, 2); ++i) {
-    const ltc::CellFit fit = ltc::fit_isotropic_cell(alpha, cosine_at(i, std::max<std::size_t>(points, 2)), start, options);
+    const double cosine = cosine_at(i, std::max<std::size_t>(points, 2));
+    const ltc::CellFit fit = ltc::fit_isotropic_cell(std::make_shared<brdf::GgxLobe>(alpha, cosine), start, options);
     fits_.push_back({fit.matrix, fit.moments.albedo});
     start = fit.parameters;
   }

@@ -14,7 +14,6 @@
 namespace pbrfit::ebrdf {
 namespace {
 
-using ltc::Vector3;
 using Polygon = std::array<Vector3, 4>;
 
 constexpr std::size_t max_samples_per_side = 48;
@@ -42,7 +41,7 @@ double ltc_integral(const LtcLookup& lobe, const Polygon& polygon) {
 
 // MIP-0 shading of one micro-normal n at p: base GGX LTC in the texel frame, plus Lambert.
 double shade_normal(const RenderInputs& in, const Polygon& light, const Vector3& n, const Vector3& view) {
-  const ltc::Frame frame = texel_frame(n, view);
+  const Frame frame = texel_frame(n, view);
   Polygon local;
   for (std::size_t i = 0; i < 4; ++i) local[i] = frame.to_local(light[i]);
   const double specular = ltc_integral(in.base_ltc->at(view.dot(n)), local);

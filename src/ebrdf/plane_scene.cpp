@@ -3,7 +3,6 @@
 namespace pbrfit::ebrdf {
 namespace {
 
-using ltc::Vector3;
 
 PlaneScene looking_at(const Vector3& camera, const Vector3& target, const Vector3& up_hint, std::size_t resolution) {
   PlaneScene s;

@@ -10,7 +10,6 @@
 namespace pbrfit::ebrdf {
 namespace {
 
-using ltc::Vector3;
 
 // Feature points of a periodic Worley grid: one per cell of a cells x cells grid over the unit torus.
 struct PointGrid {

@@ -12,12 +12,12 @@ double ViewGrid::theta(std::size_t i) const {
 
 double ViewGrid::phi(std::size_t j) const { return 2.0 * std::numbers::pi * double(j) / double(n_phi); }
 
-ltc::Vector3 ViewGrid::direction(std::size_t view) const {
+Vector3 ViewGrid::direction(std::size_t view) const {
   const double t = theta(view / n_phi), p = phi(view % n_phi);
   return {std::sin(t) * std::cos(p), std::sin(t) * std::sin(p), std::cos(t)};
 }
 
-ltc::Vector3 rotate_azimuth_to_zero(const ltc::Vector3& w, double phi) {
+Vector3 rotate_azimuth_to_zero(const Vector3& w, double phi) {
   const double c = std::cos(phi), s = std::sin(phi);
   return {c * w.x() + s * w.y(), -s * w.x() + c * w.y(), w.z()};
 }

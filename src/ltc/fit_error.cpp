@@ -1,18 +1,21 @@
 #include "pbrfit/ltc/fit_error.hpp"
 
 #include <cmath>
+#include <stdexcept>
 
 #include "pbrfit/ltc/clamped_cosine.hpp"
 #include "pbrfit/ltc/point_sets.hpp"
 
 namespace pbrfit::ltc {
 
-FitErrorEstimator::FitErrorEstimator(const GgxTarget& target, std::size_t points) : target_(target) {
+FitErrorEstimator::FitErrorEstimator(std::shared_ptr<const brdf::Lobe> target, std::size_t points)
+    : target_(std::move(target)) {
+  if (!target_) throw std::invalid_argument("ltc: a fit error needs a target lobe");
   target_samples_.reserve(points);
   base_.reserve(points);
   for (const auto& [u1, u2] : golden_lattice(points)) {
-    const Vector3 l = target.sample(u1, u2);
-    const GgxTarget::Evaluation evaluation = target.evaluate(l);
+    const Vector3 l = target_->sample(u1, u2);
+    const brdf::Lobe::Evaluation evaluation = target_->evaluate(l);
     target_samples_.push_back({l, evaluation.value, evaluation.pdf});
     base_.push_back(sample_clamped_cosine(u1, u2));
   }
@@ -24,7 +27,7 @@ void FitErrorEstimator::visit(const LtcDistribution& ltc, Accumulate&& accumulat
   const double amplitude = ltc.amplitude();
   for (const Vector3& base : base_) {
     const LtcDistribution::Transformed sample = ltc.transform(base);
-    const GgxTarget::Evaluation target = target_.evaluate(sample.direction);
+    const brdf::Lobe::Evaluation target = target_->evaluate(sample.direction);
     accumulate(target.value - amplitude * sample.pdf, target.pdf + sample.pdf);
   }
   for (const TargetSample& sample : target_samples_) {

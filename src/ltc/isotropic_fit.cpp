@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "pbrfit/ltc/distribution.hpp"
-#include "pbrfit/ltc/ggx_target.hpp"
+#include "pbrfit/ltc/isotropic_target.hpp"
 #include "pbrfit/optimize/bounds.hpp"
 #include "pbrfit/optimize/nelder_mead.hpp"
 
@@ -38,9 +38,6 @@ struct SearchSpace {
   }
 };
 
-// The lobe keeps the orientation of the cosine (det > 0); a search point beyond is infeasible.
-bool orientation_kept(const IsotropicParameters& p) { return p.m00 - p.m02 * p.m20 > 1e-300; }
-
 }  // namespace
 
 optimize::NelderMeadOptions default_cell_search() {
@@ -54,22 +51,13 @@ optimize::NelderMeadOptions default_cell_search() {
   return options;
 }
 
-CellFit fit_isotropic_cell(double alpha, double cos_theta_view, const IsotropicParameters& start,
+CellFit fit_isotropic_cell(std::shared_ptr<const brdf::Lobe> lobe, const IsotropicParameters& start,
                            const CellFitOptions& options) {
-  const GgxTarget target(alpha, cos_theta_view);
+  const IsotropicTarget target(std::move(lobe), {options.objective_points, options.moment_points, options.metric_points});
   CellFit fit;
-  fit.moments = measure_moments(target, options.moment_points);
-  const SearchSpace space{cos_theta_view >= 1.0};
-  if (space.symmetric) fit.moments.average_direction = Vector3::UnitZ();
-  const Vector3 lobe = fit.moments.average_direction;
-  const double amplitude = fit.moments.albedo;
-
-  const FitErrorEstimator estimator(target, options.objective_points);
-  const optimize::Objective objective = [&](std::span<const double> p) {
-    const IsotropicParameters parameters = space.parameters(p);
-    if (!orientation_kept(parameters)) return std::numeric_limits<double>::infinity();
-    return estimator.cubed_error(LtcDistribution(isotropic_ltc_matrix(parameters, lobe), amplitude));
-  };
+  fit.moments = target.moments();
+  const SearchSpace space{target.symmetric()};
+  const optimize::Objective objective = [&](std::span<const double> p) { return target.objective(space.parameters(p)); };
   const optimize::Bounds bounds = space.bounds();
   std::vector<double> start_point = space.point(start);
   optimize::clamp_into(bounds, start_point);
@@ -77,14 +65,12 @@ CellFit fit_isotropic_cell(double alpha, double cos_theta_view, const IsotropicP
       optimize::nelder_mead(objective, bounds, start_point, options.search, options.max_evaluations);
 
   fit.parameters = space.parameters(search.best.x);
-  fit.matrix = isotropic_ltc_matrix(fit.parameters, lobe);
+  fit.matrix = target.matrix(fit.parameters);
   fit.shader = shader_form(fit.matrix);
   fit.objective = search.best.value;
   fit.evaluations = search.evaluations;
   fit.stop = search.stop;
-  if (options.metric_points > 0) {
-    fit.error = FitErrorEstimator(target, options.metric_points).errors(LtcDistribution(fit.matrix, amplitude));
-  }
+  fit.error = target.judge(fit.matrix);
   return fit;
 }
 

@@ -6,7 +6,7 @@
 #include <cstddef>
 #include <numbers>
 
-#include "pbrfit/ltc/vector.hpp"
+#include "pbrfit/geometry/vector.hpp"
 
 namespace pbrfit::ltc::detail {
 

@@ -45,7 +45,7 @@ EnvironmentMap::EnvironmentMap(RgbImage radiance)
   if (!(rows_.total_weight() > 0.0)) throw std::invalid_argument("an environment map must not be black everywhere");
 }
 
-Texel EnvironmentMap::texel_at(const ltc::Vector3& direction) const {
+Texel EnvironmentMap::texel_at(const Vector3& direction) const {
   return texel_of(angles_of(direction), image_.width(), image_.height());
 }
 
@@ -53,12 +53,12 @@ double EnvironmentMap::texel_pdf(const Texel& texel) const {
   return texel_luminance(image_, texel) / rows_.total_weight();
 }
 
-Rgb EnvironmentMap::radiance(const ltc::Vector3& direction) const {
+Rgb EnvironmentMap::radiance(const Vector3& direction) const {
   const Texel t = texel_at(direction);
   return to_rgb(image_.pixel(t.column, t.row));
 }
 
-double EnvironmentMap::pdf(const ltc::Vector3& direction) const { return texel_pdf(texel_at(direction)); }
+double EnvironmentMap::pdf(const Vector3& direction) const { return texel_pdf(texel_at(direction)); }
 
 EnvironmentSample EnvironmentMap::sample(double u1, double u2) const {
   const BinSample row = rows_.sample(u1);

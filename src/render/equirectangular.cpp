@@ -13,14 +13,14 @@ constexpr double two_pi = 2.0 * std::numbers::pi;
 
 }  // namespace
 
-LatLong angles_of(const ltc::Vector3& d) {
+LatLong angles_of(const Vector3& d) {
   double phi = std::atan2(d.x(), d.z());
   if (phi < 0.0) phi += two_pi;
   if (phi >= two_pi) phi = 0.0;
   return {std::acos(std::clamp(d.y(), -1.0, 1.0)), phi};
 }
 
-ltc::Vector3 direction_of(const LatLong& a) {
+Vector3 direction_of(const LatLong& a) {
   const double s = std::sin(a.theta);
   return {s * std::sin(a.phi), std::cos(a.theta), s * std::cos(a.phi)};
 }

@@ -12,7 +12,7 @@ LightWeightTable::LightWeightTable(const EnvironmentMap& environment, const Sphe
                                    std::size_t samples_per_pixel, PixelRange range)
     : LightWeightTable() {
   visit_light_samples(environment, view, samples_per_pixel, range,
-                      [&](std::size_t, const ltc::Vector3& wi, const ltc::Vector3& wo, const Rgb& weight) {
+                      [&](std::size_t, const Vector3& wi, const Vector3& wo, const Rgb& weight) {
                         add(merl_cell_of_pair(wi, wo), weight);
                       });
 }

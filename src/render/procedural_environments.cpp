@@ -8,7 +8,6 @@
 namespace pbrfit::render {
 namespace {
 
-using ltc::Vector3;
 
 constexpr std::size_t map_width = 256, map_height = 128;
 constexpr double degree = std::numbers::pi / 180.0;

@@ -11,7 +11,6 @@
 namespace pbrfit::render {
 namespace {
 
-using ltc::Vector3;
 
 // The Cranley-Patterson offset of a pixel: two numbers in [0, 1) hashed from its index.
 std::array<double, 2> pixel_offset(std::size_t pixel) {
@@ -26,7 +25,7 @@ double rotated(double u, double offset) {
 
 void visit_pixel(const EnvironmentMap& environment, const std::vector<std::array<double, 2>>& points,
                  const SphereView& view, std::size_t pixel, const SampleVisitor& visit) {
-  const ltc::Frame frame = view.local_frame(pixel);
+  const Frame frame = view.local_frame(pixel);
   const Vector3 wo = view.wo_local(pixel);
   const std::array<double, 2> offset = pixel_offset(pixel);
   const double share = 1.0 / double(points.size());

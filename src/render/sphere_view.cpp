@@ -23,9 +23,9 @@ bool SphereView::on_sphere(std::size_t pixel) const {
   return x * x + y * y < 1.0;
 }
 
-ltc::Vector3 SphereView::normal(std::size_t pixel) const {
+Vector3 SphereView::normal(std::size_t pixel) const {
   const double x = x_of(pixel), y = y_of(pixel);
-  return ltc::Vector3(x, y, std::sqrt(std::max(0.0, 1.0 - x * x - y * y))).normalized();
+  return Vector3(x, y, std::sqrt(std::max(0.0, 1.0 - x * x - y * y))).normalized();
 }
 
 std::vector<std::uint8_t> SphereView::mask() const {

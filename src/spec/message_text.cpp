@@ -55,7 +55,7 @@ std::string type_requirement(const Field& field) {
     case FieldType::integer: return "an integer";
     case FieldType::number: return "a number";
     case FieldType::string: return "a string";
-    case FieldType::choice: return "one of " + join(field.choices);
+    case FieldType::choice: return choice_list(field.choices);
     case FieldType::integer_list: return list_requirement(field, "integer", "integers");
     case FieldType::number_list: return list_requirement(field, "number", "numbers");
     case FieldType::string_list:

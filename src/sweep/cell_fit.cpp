@@ -45,10 +45,24 @@ CellFitResult result_from(const CellProblem& problem, const optimize::Candidate&
   return out;
 }
 
-}  // namespace
+// Step 3 of the header: the fit polished on the refinement objective.
+CellFitResult refined(const CellProblem& problem, CellFitResult fit, const CellFitOptions& options) {
+  const optimize::Objective objective = problem.refinement(fit.parameters, fit.error);
+  const optimize::Objective internal = problem.parameters.internal_objective(objective);
+  CellFitOptions polishing = options;
+  polishing.warm_evaluations = problem.refinement_evaluations;
+  const PhaseBest best = polish(internal, problem.parameters.internal_bounds(),
+                                {problem.parameters.to_internal(fit.parameters)}, polishing);
+  fit.parameters = problem.parameters.from_internal(best.best.x);
+  if (problem.canonical) problem.canonical(fit.parameters);
+  fit.error = best.best.value;
+  fit.evaluations += best.evaluations;
+  return fit;
+}
 
-CellFitResult fit_cell(const CellProblem& problem, std::span<const WarmStart> warm_starts,
-                       const CellFitOptions& options, RandomStream& random) {
+// Steps 1 and 2 of the header.
+CellFitResult first_fit(const CellProblem& problem, std::span<const WarmStart> warm_starts,
+                        const CellFitOptions& options, RandomStream& random) {
   const optimize::Objective internal = problem.parameters.internal_objective(problem.error);
   const optimize::Bounds box = problem.parameters.internal_bounds();
   std::vector<std::vector<double>> starts;
@@ -76,6 +90,15 @@ CellFitResult fit_cell(const CellProblem& problem, std::span<const WarmStart> wa
   optimize::Candidate best{fitted.x, fitted.value, global.tolerance.final};
   const bool start_won = fitted.phase == optimize::FitPhase::warm_start;
   return result_from(problem, best, evaluations, start_won ? start_kind : Winner::global, fitted.start, true);
+}
+
+}  // namespace
+
+CellFitResult fit_cell(const CellProblem& problem, std::span<const WarmStart> warm_starts,
+                       const CellFitOptions& options, RandomStream& random) {
+  CellFitResult fit = first_fit(problem, warm_starts, options, random);
+  if (problem.refinement && problem.refinement_evaluations > 0) return refined(problem, std::move(fit), options);
+  return fit;
 }
 
 }  // namespace pbrfit::sweep

@@ -74,7 +74,7 @@ int main(int argc, char** argv) {
               data.channel(0, 0).data.rows());
 
   const auto parsed = std::get<gp::ParsedExpression>(
-      gp::parse_expression(find_seed("cook_torrance")->expression, {brdf_input_names(), brdf_parameter_names()}));
+      gp::parse_expression(find_seed("cook_torrance")->expression, {pbrfit::brdf::direction_input_names(), brdf_parameter_names()}));
   const auto compiled = *gp::compile(gp::tree_of(parsed.program, parsed.parameter_slots), brdf_parameter_count);
   const auto& steel = data.channel(0, 0).data;
   const auto folded = gp::fold_fixed_part(compiled.program, compiled.parameter_slots, steel);

@@ -60,14 +60,14 @@ void sphere_light() {
   space.add({"cap", 1e-2, 1e3, optimize::Transform::log});
   space.add({"s", -32.0, -1.0, optimize::Transform::linear});
   const optimize::Objective capped([&](std::span<const double> x) {
-    return target.error([&](const ltc::Vector3& v) { return brdf::capped_roughness_model(x[0], x[1], x[2], light, v); }) /
+    return target.error([&](const Vector3& v) { return brdf::capped_roughness_model(x[0], x[1], x[2], light, v); }) /
            target.norm();
   });
   start = Clock::now();
   const optimize::FitResult result = fit_cell(space, capped, 2000);
   const double fitting = seconds_since(start);
   const auto x = space.from_internal(result.x);
-  const double karis = target.error([&](const ltc::Vector3& v) {
+  const double karis = target.error([&](const Vector3& v) {
     return brdf::representative_point_model(alpha, brdf::karis_sphere_normalization(alpha, light), light, v);
   }) / target.norm();
   std::printf("sphere light (alpha 0.1, gamma 0.3, incidence 0.5): target %.3f s (%zu cap evaluations, %zu views); "

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "../unit/engines/ltc_reference_table.hpp"
+#include "pbrfit/brdf/ggx_lobe.hpp"
 #include "pbrfit/ltc/distribution.hpp"
 #include "pbrfit/ltc/fit_error.hpp"
 #include "pbrfit/ltc/ggx_table.hpp"
@@ -47,7 +48,7 @@ TableFit fit_table(const GgxTableLayout& layout, const CellFitOptions& options) 
     const IsotropicParameters warm =
         step.predecessor ? table.fits[layout.flat_index(*step.predecessor)].parameters : IsotropicParameters{};
     CellFit& fit = table.fits[layout.flat_index(step.cell)];
-    fit = fit_isotropic_cell(layout.alpha(step.cell), layout.cos_theta_view(step.cell), warm, options);
+    fit = fit_isotropic_cell(std::make_shared<pbrfit::brdf::GgxLobe>(layout.alpha(step.cell), layout.cos_theta_view(step.cell)), warm, options);
     table.evaluations += fit.evaluations;
   }
   table.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -61,7 +62,7 @@ std::vector<CellComparison> judge(const GgxTableLayout& layout, const TableFit& 
   for (const auto& reference : published) {
     const TableCell cell{reference.roughness_index, reference.view_index};
     const CellFit& fit = table.fits[layout.flat_index(cell)];
-    const GgxTarget target(layout.alpha(cell), layout.cos_theta_view(cell));
+    const auto target = std::make_shared<pbrfit::brdf::GgxLobe>(layout.alpha(cell), layout.cos_theta_view(cell));
     const FitErrorEstimator estimator(target, points);
     const double amplitude = fit.moments.albedo;
     CellComparison c{cell, estimator.errors(LtcDistribution(fit.matrix, amplitude)),

@@ -19,7 +19,7 @@
 
 using namespace pbrfit::render;
 using Clock = std::chrono::steady_clock;
-using pbrfit::ltc::Vector3;
+using pbrfit::Vector3;
 
 namespace {
 

@@ -13,7 +13,7 @@ eigen='<Eigen/'
 forbidden_for() {
   case $1 in
     core) echo "$mpi|$hdf5|$spdlog|$yaml|$cli|$files|$eigen" ;;
-    integrate|brdf|optimize|ltc|gp|sweep|render|ebrdf) echo "$mpi|$hdf5|$spdlog|$yaml|$cli|$files" ;;
+    geometry|integrate|brdf|optimize|ltc|gp|sweep|render|ebrdf) echo "$mpi|$hdf5|$spdlog|$yaml|$cli|$files" ;;
     spec) echo "$mpi|$hdf5|$spdlog|$cli" ;;
     store) echo "$mpi|$spdlog|$yaml|$cli" ;;
     runtime) echo "$hdf5|$yaml|$cli" ;;

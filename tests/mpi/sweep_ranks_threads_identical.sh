@@ -2,21 +2,10 @@
 # Sweeps are bitwise identical over ranks and threads (1x1, 1x2, 2x1, 2x2): a marching, hierarchical LTC
 # sweep, a multi-model sphere-light sweep whose cells all run the global search, and the Disney diffuse table.
 source "$(dirname "$0")/lib/common.bash"
+source "$(dirname "$0")/lib/layouts.bash"
 source "$(dirname "$0")/lib/report_checks.bash"
 
 MPI_FLAGS+=(--bind-to none)  # 1 rank x 2 threads needs both cores
-compare_layouts() {
-  local job=$1 name=${1%.yaml}
-  run_ranks 1 run "$job" --output "$name-ref.h5" --threads 1 -q
-  expect_status 0
-  for layout in "1 2" "2 1" "2 2"; do
-    set -- $layout
-    note "$job on $1 rank(s) x $2 thread(s)"
-    run_ranks "$1" run "$job" --output "$name-$1x$2.h5" --threads "$2" -q
-    expect_status 0
-    for group in "${GROUPS_TO_COMPARE[@]}"; do expect_identical "$name-ref.h5" "$name-$1x$2.h5" "$group"; done
-  done
-}
 
 cp "$PBRFIT_SOURCE_DIR/tests/jobs/small-sweep.yaml" ltc.yaml
 GROUPS_TO_COMPARE=(/ltc/level0 /ltc/level1)

@@ -3,20 +3,8 @@
 # generator, a table of a pbrfit result (two outputs, each reading the other) and a CSV file; bad data files
 # are refused with their own position.
 source "$(dirname "$0")/lib/common.bash"
+source "$(dirname "$0")/lib/layouts.bash"
 MPI_FLAGS+=(--bind-to none)
-
-compare_layouts() {
-  local job=$1 name=${1%.yaml}
-  run_ranks 1 run "$job" --output "$name-ref.h5" --threads 1 -q
-  expect_status 0
-  for layout in "1 2" "2 1" "2 2"; do
-    set -- $layout
-    note "$job on $1 rank(s) x $2 thread(s)"
-    run_ranks "$1" run "$job" --output "$name-$1x$2.h5" --threads "$2" -q
-    expect_status 0
-    for group in "${GROUPS_TO_COMPARE[@]}"; do expect_identical "$name-ref.h5" "$name-$1x$2.h5" "$group"; done
-  done
-}
 
 cp "$PBRFIT_SOURCE_DIR/tests/jobs/small-symreg.yaml" nguyen.yaml
 GROUPS_TO_COMPARE=(/y /subexpressions)

@@ -4,7 +4,10 @@
 // negative numbers).
 //
 // Invariants: values() has 3 x merl_cells entries, channel-major (all red, all green, all blue), each finite
-// and >= 0 or NaN; lookup() of a direction pair reads its cell (nearest, no interpolation).
+// and >= 0 or NaN; lookup() of a direction pair reads its cell (nearest, no interpolation); interpolate()
+// blends the 8 cells around it linearly in the grid's coordinates (theta_h and theta_d clamped at the grid's
+// ends, phi_d periodic over [0, pi)), leaving out unmeasured cells and renormalizing the weights of the
+// others (NaN when all 8 are unmeasured): continuous where the data are, for integrators that refine.
 #include <array>
 #include <cstddef>
 #include <vector>
@@ -23,7 +26,8 @@ class MerlTable {
   void set(std::size_t channel, std::size_t cell, double v) { values_[channel * merl_cells + cell] = v; }
   bool measured(std::size_t cell) const;  // every channel holds a number
   std::size_t measured_cells() const;
-  std::array<double, 3> lookup(const ltc::Vector3& wi, const ltc::Vector3& wo) const;
+  std::array<double, 3> lookup(const Vector3& wi, const Vector3& wo) const;
+  std::array<double, 3> interpolate(const Vector3& wi, const Vector3& wo) const;
   const std::vector<double>& values() const { return values_; }
 
  private:

@@ -8,11 +8,11 @@
 #include <functional>
 
 #include "pbrfit/brdf/merl_table.hpp"
-#include "pbrfit/ltc/vector.hpp"
+#include "pbrfit/geometry/vector.hpp"
 
 namespace pbrfit::brdf {
 
-using DirectionalRgb = std::function<std::array<double, 3>(const ltc::Vector3& wi, const ltc::Vector3& wo)>;
+using DirectionalRgb = std::function<std::array<double, 3>(const Vector3& wi, const Vector3& wo)>;
 
 MerlTable tabulate_on_merl_grid(const DirectionalRgb& brdf);
 

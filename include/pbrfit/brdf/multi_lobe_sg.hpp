@@ -24,7 +24,7 @@ struct MultiLobeSgParameters {
 // Throws std::invalid_argument for lobe_count < 2 or lambda <= 0.
 std::vector<SphericalGaussian> multi_lobe_sg_lobes(const MultiLobeSgParameters& parameters, std::size_t lobe_count);
 
-double multi_lobe_sg_value(const std::vector<SphericalGaussian>& lobes, const ltc::Vector3& w);
+double multi_lobe_sg_value(const std::vector<SphericalGaussian>& lobes, const Vector3& w);
 double multi_lobe_sg_integral(const std::vector<SphericalGaussian>& lobes);
 
 // The same parameters with `amplitude` replaced by the norm that makes the kernel integrate to `integral`.

@@ -2,7 +2,7 @@
 // How far a multi-lobe SG kernel (multi_lobe_sg.hpp) is from the cosine-weighted GGX response of one
 // (alpha, view) cell, over the whole sphere (Pesce & Iwanicki 2015, sections 7.3 and 7.6):
 //   squared_error = integral over the sphere of (rho(w) - kernel(w))^2 dw,
-// rho from ltc/ggx_target.hpp (F = 1, height-correlated Smith; 0 below the horizon, so kernels that leak
+// rho from ggx_lobe.hpp (F = 1, height-correlated Smith; 0 below the horizon, so kernels that leak
 // below it are penalized). Estimated by deterministic QMC with multiple importance sampling
 // (integrate/mis_estimator.hpp): the GGX target's visible-normal sampling and each SG lobe's exact
 // sampling, `samples_per_strategy` Halton points each, balance heuristic.
@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "pbrfit/brdf/multi_lobe_sg.hpp"
-#include "pbrfit/ltc/ggx_target.hpp"
+#include "pbrfit/brdf/ggx_lobe.hpp"
 
 namespace pbrfit::brdf {
 
@@ -24,7 +24,7 @@ class MultiLobeSgError {
   MultiLobeSgError(double alpha, double cos_theta_view, std::size_t lobe_count, std::size_t samples_per_strategy);
 
   std::size_t lobe_count() const { return lobe_count_; }
-  const ltc::GgxTarget& target() const { return target_; }
+  const GgxLobe& target() const { return target_; }
   // integral of rho over the sphere (the directional albedo, by adaptive cubature, brdf/split_sum_dfg.hpp).
   double target_integral() const { return target_integral_; }
   // integral of rho^2 (the squared error of the zero kernel), estimated with the target's samples only.
@@ -37,11 +37,11 @@ class MultiLobeSgError {
 
  private:
   struct TargetSample {
-    ltc::Vector3 direction;
+    Vector3 direction;
     double value = 0.0;
     double pdf = 0.0;
   };
-  ltc::GgxTarget target_;
+  GgxLobe target_;
   std::size_t lobe_count_;
   std::vector<std::array<double, 2>> points_;
   std::vector<TargetSample> target_samples_;

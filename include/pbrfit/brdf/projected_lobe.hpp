@@ -6,14 +6,14 @@
 //   P(x, y) = rho_alpha(w) cos(w, plane normal) / r^2 = rho_alpha(w) origin.z / r^3,
 //   w = (p - origin) / r, r = |p - origin|, p = (x, y, 0).
 // Invariants: origin.z > 0, unit axis pointing down (axis.z < 0), alpha > 0 (the caller's duty); P >= 0.
-#include "pbrfit/ltc/vector.hpp"
+#include "pbrfit/geometry/vector.hpp"
 
 namespace pbrfit::brdf {
 
 struct ProjectedLobe {
   double alpha = 0.1;
-  ltc::Vector3 origin = ltc::Vector3::UnitZ();
-  ltc::Vector3 axis = -ltc::Vector3::UnitZ();
+  Vector3 origin = Vector3::UnitZ();
+  Vector3 axis = -Vector3::UnitZ();
 
   double density(double x, double y) const;
 };

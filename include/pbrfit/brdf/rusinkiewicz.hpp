@@ -6,7 +6,7 @@
 //
 // Invariants: from_half_diff(to_half_diff(wi, wo)) gives (wi, wo) back up to rounding for wi != -wo;
 // theta_h, theta_d in [0, pi], phi_h, phi_d in (-pi, pi]; wo is wi reflected about h.
-#include "pbrfit/ltc/vector.hpp"
+#include "pbrfit/geometry/vector.hpp"
 
 namespace pbrfit::brdf {
 
@@ -16,11 +16,11 @@ struct HalfDiff {
 };
 
 struct DirectionPair {
-  ltc::Vector3 wi = ltc::Vector3::UnitZ();
-  ltc::Vector3 wo = ltc::Vector3::UnitZ();
+  Vector3 wi = Vector3::UnitZ();
+  Vector3 wo = Vector3::UnitZ();
 };
 
-HalfDiff to_half_diff(const ltc::Vector3& wi, const ltc::Vector3& wo);
+HalfDiff to_half_diff(const Vector3& wi, const Vector3& wo);
 DirectionPair from_half_diff(const HalfDiff& angles);
 
 }  // namespace pbrfit::brdf

@@ -12,12 +12,12 @@
 #include <cstddef>
 
 #include "pbrfit/integrate/adaptive_cubature.hpp"
-#include "pbrfit/ltc/vector.hpp"
+#include "pbrfit/geometry/vector.hpp"
 
 namespace pbrfit::brdf {
 
 struct SphereLight {
-  ltc::Vector3 centre = ltc::Vector3::UnitZ();  // unit direction to the light's centre
+  Vector3 centre = Vector3::UnitZ();  // unit direction to the light's centre
   double half_angle = 0.1;                      // gamma, radians
   double radius() const;                        // sin gamma: the sphere's radius at distance 1
 };
@@ -32,7 +32,7 @@ struct SphereLightResponse {
   bool converged = false;
 };
 
-SphereLightResponse sphere_light_response(double alpha, const SphereLight& light, const ltc::Vector3& view,
+SphereLightResponse sphere_light_response(double alpha, const SphereLight& light, const Vector3& view,
                                           const integrate::AdaptiveOptions& options);
 
 }  // namespace pbrfit::brdf

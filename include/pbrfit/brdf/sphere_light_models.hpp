@@ -21,21 +21,21 @@ namespace pbrfit::brdf {
 // (x^s + y^s)^(1/s) for s < 0 and x, y >= 0 (-> min(x, y) as s -> -inf); 0 if either is 0.
 double soft_minimum(double x, double y, double s);
 
-double roughness_modification_model(double alpha_modified, const SphereLight& light, const ltc::Vector3& view);
+double roughness_modification_model(double alpha_modified, const SphereLight& light, const Vector3& view);
 
 double capped_roughness_model(double alpha_modified, double cap, double smoothness, const SphereLight& light,
-                              const ltc::Vector3& view);
+                              const Vector3& view);
 
 // The representative direction; smoothness == 0 selects Karis' hard clamp, s < 0 the soft minimum.
-ltc::Vector3 representative_direction(const SphereLight& light, const ltc::Vector3& view, double smoothness);
+Vector3 representative_direction(const SphereLight& light, const Vector3& view, double smoothness);
 
 double karis_sphere_normalization(double alpha, const SphereLight& light);
 
 double representative_point_model(double alpha_modified, double scale, const SphereLight& light,
-                                  const ltc::Vector3& view);
+                                  const Vector3& view);
 
 double smoothed_representative_point_model(double alpha_modified, double scale, double smoothness,
-                                           const SphereLight& light, const ltc::Vector3& view);
+                                           const SphereLight& light, const Vector3& view);
 
 double course_smoothed_normalization(double alpha, const SphereLight& light);
 

@@ -32,7 +32,7 @@ class SphereLightTarget {
                     const integrate::AdaptiveOptions& options);
 
   struct Node {
-    ltc::Vector3 view;
+    Vector3 view;
     double weight = 0.0;  // solid angle
     double truth = 0.0;   // sphere_light_response at this view
   };
@@ -45,12 +45,12 @@ class SphereLightTarget {
 
   // The L^p distance over views between the truth and model(view): (sum w |truth - model|^p)^(1/p);
   // p = +inf gives the largest |truth - model| over the nodes. p >= 1.
-  double error(const std::function<double(const ltc::Vector3&)>& model, double p = 2.0) const;
+  double error(const std::function<double(const Vector3&)>& model, double p = 2.0) const;
   // The L^p norm of the truth (error() of the zero model), to make errors relative.
   double norm(double p = 2.0) const;
   // The scale k minimizing the L2 error of k * model (a closed-form fit of a model's normalization):
   // sum w truth model / sum w model^2; 0 for a model that vanishes at every node.
-  double least_squares_scale(const std::function<double(const ltc::Vector3&)>& model) const;
+  double least_squares_scale(const std::function<double(const Vector3&)>& model) const;
 
  private:
   double alpha_;

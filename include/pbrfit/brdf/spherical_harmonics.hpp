@@ -12,13 +12,12 @@
 // function already symmetric about d this is exactly the m = 0 coefficient after rotating d onto z.
 #include <array>
 
-#include "pbrfit/ltc/vector.hpp"
+#include "pbrfit/geometry/vector.hpp"
 
 namespace pbrfit::brdf {
 
 using ShCoefficients = std::array<double, 9>;
 using ZonalCoefficients = std::array<double, 3>;
-using ltc::Vector3;
 
 // Basis values at a unit direction w.
 ShCoefficients sh_basis(const Vector3& w);

@@ -2,7 +2,7 @@
 // The base BRDF of one micro-normal, sampled in the geometric frame (Nahmias 2022, section 3.4.1): the
 // lobe f (n.l) of the texel whose normal is n, seen from the geometric view v.
 //  - specular: GGX of width alpha, F = 1, height-correlated Smith; light directions by visible-normal
-//    sampling (ltc/ggx_target.hpp), accepted with probability G2 / G1, so they follow the lobe exactly;
+//    sampling (brdf/ggx_lobe.hpp), accepted with probability G2 / G1, so they follow the lobe exactly;
 //  - diffuse: Lambert, cosine-distributed about n.
 // The lobe is sampled in the texel's own frame with the view at elevation theta_q = acos(max(v.n, 0.01))
 // and azimuth 0, then rotated so that z goes to n and that view to v (the thesis' R_1 R_0; when v is
@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "pbrfit/core/random_stream.hpp"
-#include "pbrfit/ltc/vector.hpp"
+#include "pbrfit/geometry/vector.hpp"
 
 namespace pbrfit::ebrdf {
 
@@ -29,9 +29,9 @@ struct BaseLobe {
 
 // The texel frame: z = the normal n, x = the view's direction within the tangent plane of n (when v is
 // parallel to n, Frame::from_z(n)).
-ltc::Frame texel_frame(const ltc::Vector3& n, const ltc::Vector3& v);
+Frame texel_frame(const Vector3& n, const Vector3& v);
 
-std::vector<ltc::Vector3> sample_base_lobe(const BaseLobe& lobe, const ltc::Vector3& normal, const ltc::Vector3& view,
+std::vector<Vector3> sample_base_lobe(const BaseLobe& lobe, const Vector3& normal, const Vector3& view,
                                            std::size_t count, RandomStream& random);
 
 }  // namespace pbrfit::ebrdf

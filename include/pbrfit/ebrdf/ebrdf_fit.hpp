@@ -22,7 +22,7 @@
 #include "pbrfit/ltc/anisotropic_fit.hpp"
 #include "pbrfit/ltc/descent_fit.hpp"
 #include "pbrfit/ltc/sgd_fit.hpp"
-#include "pbrfit/ltc/vector.hpp"
+#include "pbrfit/geometry/vector.hpp"
 
 namespace pbrfit::ebrdf {
 
@@ -45,12 +45,12 @@ struct EbrdfFit {
   double start_error = 0.0;       // descent, nelder_mead: SW at the start, on the search's axes
 };
 
-EbrdfFit fit_ebrdf(std::span<const ltc::Vector3> samples, double amplitude, const EbrdfFitSettings& settings,
-                   RandomStream& sgd_random, const ltc::Matrix3* warm_start = nullptr);
+EbrdfFit fit_ebrdf(std::span<const Vector3> samples, double amplitude, const EbrdfFitSettings& settings,
+                   RandomStream& sgd_random, const Matrix3* warm_start = nullptr);
 
-ltc::Matrix3 fit_matrix(const EbrdfFit& fit);
+Matrix3 fit_matrix(const EbrdfFit& fit);
 
 // M / cbrt(|det M|).
-ltc::Matrix3 unit_determinant(const ltc::Matrix3& m);
+Matrix3 unit_determinant(const Matrix3& m);
 
 }  // namespace pbrfit::ebrdf

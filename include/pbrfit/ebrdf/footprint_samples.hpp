@@ -48,7 +48,7 @@ class FootprintSampler {
   // The MIP-0 texels (x + y * size) that contribute to the texel, in pooling order.
   std::vector<std::size_t> contributing_texels(const MipTexel& texel) const;
   // The pooled set of the given contributing texels (from contributing_texels) for one view.
-  std::vector<ltc::Vector3> samples(const std::vector<std::size_t>& contributing, std::size_t view) const;
+  std::vector<Vector3> samples(const std::vector<std::size_t>& contributing, std::size_t view) const;
   double amplitude(const MipTexel& texel, std::size_t view) const;
 
  private:

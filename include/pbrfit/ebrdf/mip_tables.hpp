@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "pbrfit/ebrdf/view_grid.hpp"
-#include "pbrfit/ltc/vector.hpp"
+#include "pbrfit/geometry/vector.hpp"
 
 namespace pbrfit::ebrdf {
 
@@ -22,7 +22,7 @@ struct LtcLevel {
 };
 
 struct LtcLookup {
-  ltc::Matrix3 matrix = ltc::Matrix3::Identity();
+  Matrix3 matrix = Matrix3::Identity();
   double amplitude = 0.0;
 };
 

@@ -9,7 +9,7 @@
 #include <span>
 #include <vector>
 
-#include "pbrfit/ltc/vector.hpp"
+#include "pbrfit/geometry/vector.hpp"
 
 namespace pbrfit::ebrdf {
 
@@ -20,20 +20,20 @@ bool is_power_of_two(std::size_t n);
 class NormalMap {
  public:
   // Throws std::invalid_argument unless size is a power of two and normals has size * size entries.
-  NormalMap(std::size_t size, std::vector<ltc::Vector3> normals);
+  NormalMap(std::size_t size, std::vector<Vector3> normals);
 
   std::size_t size() const { return size_; }
-  const ltc::Vector3& at(std::int64_t x, std::int64_t y) const;
-  std::span<const ltc::Vector3> normals() const { return normals_; }
+  const Vector3& at(std::int64_t x, std::int64_t y) const;
+  std::span<const Vector3> normals() const { return normals_; }
 
  private:
   std::size_t size_;
-  std::vector<ltc::Vector3> normals_;
+  std::vector<Vector3> normals_;
 };
 
 // A unit normal from any vector: normalized, lifted to z >= min_normal_z (a zero or non-finite vector
 // becomes the geometric normal).
-ltc::Vector3 shadable_normal(const ltc::Vector3& n);
+Vector3 shadable_normal(const Vector3& n);
 
 // The usual 8-bit encoding: each channel c maps to 2 c / 255 - 1 (x right, y along rows, z out); rgb holds
 // size * size pixels, R G B adjacent, row-major.

@@ -15,22 +15,22 @@
 #include <optional>
 #include <string>
 
-#include "pbrfit/ltc/vector.hpp"
+#include "pbrfit/geometry/vector.hpp"
 
 namespace pbrfit::ebrdf {
 
 enum class SceneView { top, grazing };
 
 struct PlaneScene {
-  ltc::Vector3 camera;
-  ltc::Vector3 forward, right, up;  // orthonormal camera frame
+  Vector3 camera;
+  Vector3 forward, right, up;  // orthonormal camera frame
   double tan_half_fov = 0.2679;      // 30 degrees vertical
   std::size_t resolution = 128;
-  std::array<ltc::Vector3, 4> light;  // vertices in order around the rectangle
+  std::array<Vector3, 4> light;  // vertices in order around the rectangle
 
-  ltc::Vector3 ray(double column, double row) const;
+  Vector3 ray(double column, double row) const;
   // The point where the ray through (column, row) meets the plane.
-  std::optional<ltc::Vector3> plane_hit(double column, double row) const;
+  std::optional<Vector3> plane_hit(double column, double row) const;
 };
 
 PlaneScene make_plane_scene(SceneView view, double distance, std::size_t resolution);

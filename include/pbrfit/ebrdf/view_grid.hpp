@@ -7,7 +7,7 @@
 // Invariants: view index = i * n_phi + j; direction() is a unit vector with z > 0.
 #include <cstddef>
 
-#include "pbrfit/ltc/vector.hpp"
+#include "pbrfit/geometry/vector.hpp"
 
 namespace pbrfit::ebrdf {
 
@@ -18,10 +18,10 @@ struct ViewGrid {
   std::size_t count() const { return n_theta * n_phi; }
   double theta(std::size_t i) const;
   double phi(std::size_t j) const;
-  ltc::Vector3 direction(std::size_t view) const;
+  Vector3 direction(std::size_t view) const;
 };
 
 // w rotated about z by -phi: the frame in which a view of azimuth phi has azimuth 0.
-ltc::Vector3 rotate_azimuth_to_zero(const ltc::Vector3& w, double phi);
+Vector3 rotate_azimuth_to_zero(const Vector3& w, double phi);
 
 }  // namespace pbrfit::ebrdf

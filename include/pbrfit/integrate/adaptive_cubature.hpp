@@ -14,7 +14,9 @@
 //    result.value the per-component sum of their Kronrod values, both summed with compensation over
 //    the leaves in creation order;
 //  - every initial tile is evaluated (15^Dim samples each) even if that exceeds max_evaluations; a split
-//    happens only if its two children fit in the remaining budget.
+//    happens only if its two children fit in the remaining budget;
+//  - the tolerance is max(abs_tolerance, rel_tolerance * the largest |component| of the running value);
+//    with rel_tolerance = 0 (the default) it is abs_tolerance alone.
 #include <array>
 #include <cstddef>
 #include <span>
@@ -28,6 +30,7 @@ struct AdaptiveOptions {
   double abs_tolerance = 1e-6;               // target for the summed error estimate
   std::size_t max_evaluations = 50'000'000;  // stop (unconverged) before spending more integrand calls
   int max_depth = 48;                        // a tile split this many times is never split again
+  double rel_tolerance = 0.0;                // ... or this fraction of the integral, whichever is larger
 };
 
 template <int Comp>

@@ -32,8 +32,9 @@ std::array<Box<Dim>, 2> halves(const Box<Dim>& box, int axis) {
 }
 
 // All tiles ever created (index = creation order), the heap of splittable leaves, and the running
-// sum of leaf errors. Invariant: finite_error_sum + (infinite_error_leaves ? inf : 0) equals the sum of
-// the leaf error estimates up to rounding drift, which resynchronize() removes.
+// sums of leaf errors and values. Invariant: finite_error_sum + (infinite_error_leaves ? inf : 0) equals the
+// sum of the leaf error estimates up to rounding drift, which resynchronize() removes (and likewise the
+// value sums).
 template <int Dim, int Comp>
 class TileSet {
  public:
@@ -44,6 +45,7 @@ class TileSet {
     if (!std::isfinite(sanitized.error)) sanitized.error = std::numeric_limits<double>::infinity();
     tiles_.push_back(Tile<Dim, Comp>{box, sanitized, depth, true});
     count_error(sanitized.error, +1);
+    for (int c = 0; c < Comp; ++c) value_sum_[c] += sanitized.value[c];
     if (depth < max_depth_) {
       heap_.push_back(tiles_.size() - 1);
       std::push_heap(heap_.begin(), heap_.end(), heap_order());
@@ -59,7 +61,16 @@ class TileSet {
     heap_.pop_back();
     worst.leaf = false;
     count_error(worst.estimate.error, -1);
+    for (int c = 0; c < Comp; ++c) value_sum_[c] -= worst.estimate.value[c];
     return worst;
+  }
+
+  // max(abs_tolerance, rel_tolerance * the largest |running value|).
+  double tolerance(const AdaptiveOptions& options) const {
+    if (!(options.rel_tolerance > 0.0)) return options.abs_tolerance;
+    double magnitude = 0.0;
+    for (int c = 0; c < Comp; ++c) magnitude = std::max(magnitude, std::abs(value_sum_[c]));
+    return std::max(options.abs_tolerance, options.rel_tolerance * magnitude);
   }
 
   bool below(double tolerance) const { return infinite_error_leaves_ == 0 && finite_error_sum_ <= tolerance; }
@@ -67,10 +78,14 @@ class TileSet {
   // Replaces the running sum by the compensated sum over the leaves (removes drift).
   void resynchronize() {
     CompensatedSum sum;
+    std::array<CompensatedSum, Comp> values{};
     for (const auto& tile : tiles_) {
-      if (tile.leaf && std::isfinite(tile.estimate.error)) sum.add(tile.estimate.error);
+      if (!tile.leaf) continue;
+      if (std::isfinite(tile.estimate.error)) sum.add(tile.estimate.error);
+      for (int c = 0; c < Comp; ++c) values[c].add(tile.estimate.value[c]);
     }
     finite_error_sum_ = sum.value();
+    for (int c = 0; c < Comp; ++c) value_sum_[c] = values[c].value();
   }
 
   AdaptiveResult<Comp> result(double tolerance) const {
@@ -113,6 +128,7 @@ class TileSet {
   std::vector<std::size_t> heap_;  // indices into tiles_ of leaves with depth < max_depth
   double finite_error_sum_ = 0.0;
   int infinite_error_leaves_ = 0;
+  std::array<double, Comp> value_sum_{};
 };
 
 }  // namespace adaptive_detail
@@ -132,9 +148,9 @@ AdaptiveResult<Comp> integrate_adaptive(const Integrand& f, std::span<const Box<
   }
 
   while (true) {
-    if (tiles.below(options.abs_tolerance)) {
+    if (tiles.below(tiles.tolerance(options))) {
       tiles.resynchronize();
-      if (tiles.below(options.abs_tolerance)) break;
+      if (tiles.below(tiles.tolerance(options))) break;
     }
     if (!tiles.has_splittable()) break;
     if (evaluations + 2 * points > options.max_evaluations) break;
@@ -145,7 +161,7 @@ AdaptiveResult<Comp> integrate_adaptive(const Integrand& f, std::span<const Box<
     evaluations += 2 * points;
   }
 
-  AdaptiveResult<Comp> result = tiles.result(options.abs_tolerance);
+  AdaptiveResult<Comp> result = tiles.result(tiles.tolerance(options));
   result.evaluations = evaluations;
   return result;
 }

@@ -13,7 +13,7 @@
 // deterministic.
 #include <span>
 
-#include "pbrfit/ltc/vector.hpp"
+#include "pbrfit/geometry/vector.hpp"
 
 namespace pbrfit::ltc {
 

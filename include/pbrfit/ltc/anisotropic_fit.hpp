@@ -13,7 +13,7 @@
 #include <cstddef>
 #include <span>
 
-#include "pbrfit/ltc/vector.hpp"
+#include "pbrfit/geometry/vector.hpp"
 #include "pbrfit/optimize/nelder_mead_options.hpp"
 #include "pbrfit/optimize/stop_reason.hpp"
 

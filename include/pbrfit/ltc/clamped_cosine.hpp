@@ -9,7 +9,7 @@
 #include <numbers>
 #include <vector>
 
-#include "pbrfit/ltc/vector.hpp"
+#include "pbrfit/geometry/vector.hpp"
 
 namespace pbrfit::ltc {
 

@@ -13,7 +13,7 @@
 #include <span>
 
 #include "pbrfit/ltc/anisotropic_fit.hpp"
-#include "pbrfit/ltc/vector.hpp"
+#include "pbrfit/geometry/vector.hpp"
 
 namespace pbrfit::ltc {
 

@@ -12,7 +12,7 @@
 //  - the constructor throws std::invalid_argument for a singular or non-finite M, or an amplitude < 0.
 #include <span>
 
-#include "pbrfit/ltc/vector.hpp"
+#include "pbrfit/geometry/vector.hpp"
 
 namespace pbrfit::ltc {
 

@@ -1,5 +1,5 @@
 #pragma once
-// How far an LTC is from the target lobe rho, over the whole sphere (Heitz et al. 2016, section 4.1):
+// How far an LTC is from a target lobe rho (brdf/lobe.hpp), over the whole sphere (Heitz et al. 2016, section 4.1):
 //   cubed = integral of |D(l) - rho(l)|^3 dl     (the paper's fitting objective, not its cube root)
 //   l2    = sqrt(integral of (D(l) - rho(l))^2 dl)
 // estimated by multiple importance sampling of both distributions with the balance heuristic: `points`
@@ -11,11 +11,12 @@
 // Invariants: the target's samples, values and densities are computed once, by the constructor; an estimate
 // allocates nothing and depends only on (target, points, LTC); both errors are >= 0.
 #include <cstddef>
+#include <memory>
 #include <vector>
 
+#include "pbrfit/brdf/lobe.hpp"
+#include "pbrfit/geometry/vector.hpp"
 #include "pbrfit/ltc/distribution.hpp"
-#include "pbrfit/ltc/ggx_target.hpp"
-#include "pbrfit/ltc/vector.hpp"
 
 namespace pbrfit::ltc {
 
@@ -26,7 +27,7 @@ struct FitError {
 
 class FitErrorEstimator {
  public:
-  FitErrorEstimator(const GgxTarget& target, std::size_t points);
+  FitErrorEstimator(std::shared_ptr<const brdf::Lobe> target, std::size_t points);
 
   double cubed_error(const LtcDistribution& ltc) const;
   FitError errors(const LtcDistribution& ltc) const;
@@ -41,7 +42,7 @@ class FitErrorEstimator {
   template <class Accumulate>
   void visit(const LtcDistribution& ltc, Accumulate&& accumulate) const;
 
-  GgxTarget target_;
+  std::shared_ptr<const brdf::Lobe> target_;
   std::vector<TargetSample> target_samples_;
   std::vector<Vector3> base_;  // cosine samples the LTC transforms
 };

@@ -1,9 +1,10 @@
 #pragma once
-// Fitting one cell of an isotropic LTC table (Heitz et al. 2016, section 4): the LTC of the target lobe rho
-// for (alpha, cos theta_v) (ggx_target.hpp) in the paper's parametrization with the tilt m20 freed (see
-// isotropic_parameters.hpp), with the albedo as amplitude, minimizing the cubed error (fit_error.hpp) by the
-// optimize engine's Nelder-Mead with restarts from a start the caller chooses: the fit of a neighbouring cell
-// when marching through a table as the paper does (ggx_table.hpp), or the identity.
+// Fitting one cell of an isotropic LTC table (Heitz et al. 2016, section 4) on its own, outside a sweep: the
+// LTC of a lobe (brdf/lobe.hpp; GGX for the published table) in the paper's parametrization with the tilt
+// m20 freed (see isotropic_parameters.hpp), with the albedo as amplitude, minimizing the cubed error of
+// isotropic_target.hpp by the optimize engine's Nelder-Mead with restarts from a start the caller chooses:
+// the fit of a neighbouring cell when marching through a table as the paper does (ggx_table.hpp), or the
+// identity.
 //
 // The search runs over p = (ln m00, ln m11, m02, m20) in the box ln m in [ln 1e-6, ln 8], m02 and m20 in
 // [-4, 4] (a start outside is clamped into it; points with m00 - m02 m20 <= 0 are infeasible); at normal view
@@ -13,12 +14,14 @@
 // measured on a lattice of metric_points points (a judge independent of the objective's lattice when the
 // counts differ), and is left at zero when metric_points = 0.
 #include <cstddef>
+#include <memory>
 
+#include "pbrfit/brdf/lobe.hpp"
 #include "pbrfit/ltc/fit_error.hpp"
-#include "pbrfit/ltc/ggx_moments.hpp"
+#include "pbrfit/ltc/lobe_moments.hpp"
 #include "pbrfit/ltc/isotropic_parameters.hpp"
 #include "pbrfit/ltc/shader_form.hpp"
-#include "pbrfit/ltc/vector.hpp"
+#include "pbrfit/geometry/vector.hpp"
 #include "pbrfit/optimize/nelder_mead_options.hpp"
 #include "pbrfit/optimize/stop_reason.hpp"
 
@@ -40,14 +43,14 @@ struct CellFit {
   IsotropicParameters parameters;
   Matrix3 matrix = Matrix3::Identity();  // M, mapping cosine directions to the lobe
   ShaderForm shader{};                   // the published ltc_1 form of M
-  GgxMoments moments;                    // albedo (amplitude), fresnel, average direction
+  LobeMoments moments;                   // albedo (amplitude), fresnel, average direction
   double objective = 0.0;                // the cubed error on the objective's lattice
   FitError error;                        // both errors on the metric lattice
   std::size_t evaluations = 0;
   optimize::StopReason stop = optimize::StopReason::budget;
 };
 
-CellFit fit_isotropic_cell(double alpha, double cos_theta_view, const IsotropicParameters& start,
+CellFit fit_isotropic_cell(std::shared_ptr<const brdf::Lobe> lobe, const IsotropicParameters& start,
                            const CellFitOptions& options);
 
 }  // namespace pbrfit::ltc

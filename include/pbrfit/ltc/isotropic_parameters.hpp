@@ -13,7 +13,7 @@
 //
 // Invariants: det M = m11 (m00 - m02 m20), invertible when both factors are non-zero; the (0,1), (1,0),
 // (1,2), (2,1) entries of M are 0, so shader_form() (shader_form.hpp) applies.
-#include "pbrfit/ltc/vector.hpp"
+#include "pbrfit/geometry/vector.hpp"
 
 namespace pbrfit::ltc {
 

@@ -11,7 +11,7 @@
 // it tends to that LTC (up to the equivalences of distribution.hpp) as the sample count grows; deterministic.
 #include <span>
 
-#include "pbrfit/ltc/vector.hpp"
+#include "pbrfit/geometry/vector.hpp"
 
 namespace pbrfit::ltc {
 

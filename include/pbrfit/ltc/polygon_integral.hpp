@@ -13,7 +13,7 @@
 //    component is the signed, unclipped clamped-cosine integral.
 #include <span>
 
-#include "pbrfit/ltc/vector.hpp"
+#include "pbrfit/geometry/vector.hpp"
 
 namespace pbrfit::ltc {
 

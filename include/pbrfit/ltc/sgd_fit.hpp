@@ -10,7 +10,7 @@
 #include <span>
 
 #include "pbrfit/core/random_stream.hpp"
-#include "pbrfit/ltc/vector.hpp"
+#include "pbrfit/geometry/vector.hpp"
 
 namespace pbrfit::ltc {
 

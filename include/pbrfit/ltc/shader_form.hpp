@@ -14,7 +14,7 @@
 // std::invalid_argument if M is singular or M's inverse has a zero middle entry.
 #include <array>
 
-#include "pbrfit/ltc/vector.hpp"
+#include "pbrfit/geometry/vector.hpp"
 
 namespace pbrfit::ltc {
 

@@ -18,7 +18,7 @@
 #include <span>
 #include <vector>
 
-#include "pbrfit/ltc/vector.hpp"
+#include "pbrfit/geometry/vector.hpp"
 
 namespace pbrfit::ltc {
 

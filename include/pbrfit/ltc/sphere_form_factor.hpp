@@ -11,7 +11,7 @@
 //  - horizon_clipped_form_factor(F) = |F| * ratio(F.z / |F|, |F|), the sphere approximation of the
 //    clipped form factor of whatever produced F (exact for a cap), with |F| clamped to [0, 1].
 // All three are in [0, 1], continuous, and non-decreasing in z.
-#include "pbrfit/ltc/vector.hpp"
+#include "pbrfit/geometry/vector.hpp"
 
 namespace pbrfit::ltc {
 

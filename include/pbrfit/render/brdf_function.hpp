@@ -3,11 +3,11 @@
 // the viewer), returning its RGB value (not multiplied by the cosine).
 #include <functional>
 
-#include "pbrfit/ltc/vector.hpp"
+#include "pbrfit/geometry/vector.hpp"
 #include "pbrfit/render/rgb.hpp"
 
 namespace pbrfit::render {
 
-using BrdfFunction = std::function<Rgb(const ltc::Vector3& wi, const ltc::Vector3& wo)>;
+using BrdfFunction = std::function<Rgb(const Vector3& wi, const Vector3& wo)>;
 
 }  // namespace pbrfit::render

@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "pbrfit/core/rgb_image.hpp"
-#include "pbrfit/ltc/vector.hpp"
+#include "pbrfit/geometry/vector.hpp"
 #include "pbrfit/render/equirectangular.hpp"
 #include "pbrfit/render/piecewise_constant.hpp"
 #include "pbrfit/render/rgb.hpp"
@@ -23,7 +23,7 @@
 namespace pbrfit::render {
 
 struct EnvironmentSample {
-  ltc::Vector3 direction = ltc::Vector3::UnitY();  // unit, world frame
+  Vector3 direction = Vector3::UnitY();  // unit, world frame
   Rgb radiance = {0.0, 0.0, 0.0};
   double pdf = 0.0;  // per steradian
 };
@@ -33,15 +33,15 @@ class EnvironmentMap {
   explicit EnvironmentMap(RgbImage radiance);
 
   const RgbImage& image() const { return image_; }
-  Rgb radiance(const ltc::Vector3& direction) const;
-  double pdf(const ltc::Vector3& direction) const;
+  Rgb radiance(const Vector3& direction) const;
+  double pdf(const Vector3& direction) const;
   // (u1, u2) in [0, 1)^2: u1 picks the row and the polar angle inside it, u2 the column and the azimuth.
   EnvironmentSample sample(double u1, double u2) const;
   // P: luminance integrated over the sphere.
   double luminous_power() const { return rows_.total_weight(); }
 
  private:
-  Texel texel_at(const ltc::Vector3& direction) const;
+  Texel texel_at(const Vector3& direction) const;
   double texel_pdf(const Texel& texel) const;
 
   RgbImage image_;

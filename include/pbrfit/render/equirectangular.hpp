@@ -8,7 +8,7 @@
 // inside the image (theta = pi falls in the last row, phi near 2 pi in the last column).
 #include <cstddef>
 
-#include "pbrfit/ltc/vector.hpp"
+#include "pbrfit/geometry/vector.hpp"
 
 namespace pbrfit::render {
 
@@ -20,8 +20,8 @@ struct Texel {
   std::size_t column = 0, row = 0;
 };
 
-LatLong angles_of(const ltc::Vector3& direction);
-ltc::Vector3 direction_of(const LatLong& angles);
+LatLong angles_of(const Vector3& direction);
+Vector3 direction_of(const LatLong& angles);
 Texel texel_of(const LatLong& angles, std::size_t width, std::size_t height);
 // The solid angle of a texel of row `row`: (cos(row pi/H) - cos((row+1) pi/H)) 2 pi / W; they sum to 4 pi.
 double texel_solid_angle(std::size_t row, std::size_t width, std::size_t height);

@@ -18,7 +18,7 @@
 #include <functional>
 #include <vector>
 
-#include "pbrfit/ltc/vector.hpp"
+#include "pbrfit/geometry/vector.hpp"
 #include "pbrfit/render/environment_map.hpp"
 #include "pbrfit/render/rgb.hpp"
 #include "pbrfit/render/sphere_view.hpp"
@@ -26,10 +26,10 @@
 namespace pbrfit::render {
 
 using SampleVisitor =
-    std::function<void(std::size_t pixel, const ltc::Vector3& wi, const ltc::Vector3& wo, const Rgb& weight)>;
+    std::function<void(std::size_t pixel, const Vector3& wi, const Vector3& wo, const Rgb& weight)>;
 
 // The flat MERL cell (brdf/merl_grid.hpp) of a pair of local directions.
-std::uint32_t merl_cell_of_pair(const ltc::Vector3& wi, const ltc::Vector3& wo);
+std::uint32_t merl_cell_of_pair(const Vector3& wi, const Vector3& wo);
 
 // Visits the samples of the pixels of `range` in pixel order, then sample order; off-sphere pixels have none.
 void visit_light_samples(const EnvironmentMap& environment, const SphereView& view, std::size_t samples_per_pixel,
@@ -45,8 +45,8 @@ class SphereSamples {
   std::size_t size() const { return cell_.size(); }
   // The stored samples of `pixel` are first(pixel) .. first(pixel + 1) - 1.
   std::size_t first(std::size_t pixel) const { return first_[pixel]; }
-  ltc::Vector3 wo(std::size_t pixel) const { return wo_[pixel]; }
-  ltc::Vector3 wi(std::size_t sample) const {
+  Vector3 wo(std::size_t pixel) const { return wo_[pixel]; }
+  Vector3 wi(std::size_t sample) const {
     return {double(wi_[3 * sample]), double(wi_[3 * sample + 1]), double(wi_[3 * sample + 2])};
   }
   Rgb weight(std::size_t sample) const {
@@ -60,7 +60,7 @@ class SphereSamples {
   SphereView view_;
   std::size_t samples_per_pixel_;
   std::vector<std::size_t> first_;  // pixels + 1 offsets
-  std::vector<ltc::Vector3> wo_;    // per pixel, local (zero off the sphere)
+  std::vector<Vector3> wo_;    // per pixel, local (zero off the sphere)
   std::vector<float> wi_, weight_;  // 3 per sample
   std::vector<std::uint32_t> cell_;
 };

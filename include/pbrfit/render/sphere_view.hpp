@@ -11,7 +11,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "pbrfit/ltc/vector.hpp"
+#include "pbrfit/geometry/vector.hpp"
 
 namespace pbrfit::render {
 
@@ -29,10 +29,10 @@ class SphereView {
   PixelRange all_pixels() const { return {0, pixels()}; }
   bool on_sphere(std::size_t pixel) const;
   // The sphere's normal under the pixel's centre; meaningful only on the sphere.
-  ltc::Vector3 normal(std::size_t pixel) const;
-  // The pixel's shading frame (ltc::Frame::from_z of the normal) and the direction to the camera in it.
-  ltc::Frame local_frame(std::size_t pixel) const { return ltc::Frame::from_z(normal(pixel)); }
-  ltc::Vector3 wo_local(std::size_t pixel) const { return local_frame(pixel).to_local(ltc::Vector3::UnitZ()); }
+  Vector3 normal(std::size_t pixel) const;
+  // The pixel's shading frame (Frame::from_z of the normal) and the direction to the camera in it.
+  Frame local_frame(std::size_t pixel) const { return Frame::from_z(normal(pixel)); }
+  Vector3 wo_local(std::size_t pixel) const { return local_frame(pixel).to_local(Vector3::UnitZ()); }
   std::vector<std::uint8_t> mask() const;
 
  private:

@@ -9,6 +9,9 @@
 //     round seeded with the polished point and the warm starts; the better of both phases is kept.
 //  Without warm starts: Nelder-Mead from the problem's default start when the policy is `never`, else the
 //  default fitter with the default start (if any) as its warm start.
+//  3. A problem with a refinement (a second objective made from the fit: an LTC fitted to its lobe, then to
+//     the lights it is judged by) is polished from the fit on that objective by Nelder-Mead for
+//     refinement_evaluations evaluations; the result is the refined point and its refined objective.
 //
 // Contract: deterministic for the same inputs and stream state; evaluations counts every objective call
 // of both phases; the reported error is the objective at the returned parameters (at the final tolerance).
@@ -51,6 +54,9 @@ struct CellProblem {
   optimize::Objective error = [](std::span<const double>) { return std::numeric_limits<double>::infinity(); };
   std::vector<double> default_start;
   std::function<void(std::span<double>)> canonical;
+  // When set: the second objective, made from the fitted parameters (model coordinates) and their error.
+  std::function<optimize::Objective(std::span<const double> fitted, double fitted_error)> refinement;
+  std::size_t refinement_evaluations = 0;
 };
 
 enum class Winner { global, default_start, warm_start };

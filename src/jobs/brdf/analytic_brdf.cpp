@@ -16,9 +16,9 @@ render::BrdfFunction analytic_brdf(const gp::CompiledTree& tree, const std::vect
     (*programs)[c] = tree.program;
     gp::set_parameters((*programs)[c], tree.parameter_slots, parameters[c]);
   }
-  return [programs](const ltc::Vector3& wi, const ltc::Vector3& wo) -> render::Rgb {
+  return [programs](const Vector3& wi, const Vector3& wo) -> render::Rgb {
     if (wi.z() <= 0.0 || wo.z() <= 0.0) return {0.0, 0.0, 0.0};
-    const auto row = brdf_inputs(wi, wo);
+    const auto row = pbrfit::brdf::direction_inputs(wi, wo);
     render::Rgb value;
     for (std::size_t c = 0; c < 3; ++c) value[c] = gp::walk_tree<double>((*programs)[c], std::span<const double>(row));
     return value;

@@ -14,7 +14,7 @@ namespace pbrfit::jobs::brdf {
 namespace {
 
 gp::SyntaxTree seed_tree(const std::string& name) {
-  const auto parsed = gp::parse_expression(find_seed(name)->expression, {brdf_input_names(), brdf_parameter_names()});
+  const auto parsed = gp::parse_expression(find_seed(name)->expression, {pbrfit::brdf::direction_input_names(), brdf_parameter_names()});
   if (const auto* error = std::get_if<gp::ExpressionError>(&parsed))
     throw std::logic_error("seed BRDF " + name + " does not parse: " + error->message);
   const auto& p = std::get<gp::ParsedExpression>(parsed);

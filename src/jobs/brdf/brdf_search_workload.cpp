@@ -103,7 +103,7 @@ Bytes BrdfSearchWorkload::evaluate(const runtime::ItemTask& task) const {
 std::string BrdfSearchWorkload::expression(const gp::SyntaxTree& tree) const {
   const auto compiled = gp::compile(tree, brdf_parameter_count);
   if (!compiled) return "(too long to compile)";
-  std::string text = gp::print_expression(compiled->program, {brdf_input_names(), brdf_parameter_names()},
+  std::string text = gp::print_expression(compiled->program, {pbrfit::brdf::direction_input_names(), brdf_parameter_names()},
                                           compiled->parameter_slots);
   for (std::size_t at = text.find('\n'); at != std::string::npos; at = text.find('\n', at)) text.replace(at, 1, "; ");
   return text;

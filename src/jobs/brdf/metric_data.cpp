@@ -24,7 +24,7 @@ ChannelData channel_data(const render::PrunedLightTable& table, const std::vecto
   out.data.weights.resize(Eigen::Index(rows.size()));
   for (std::size_t r = 0; r < rows.size(); ++r) {
     const std::size_t k = rows[r];
-    const auto in = brdf_inputs(pairs[k].wi, pairs[k].wo);
+    const auto in = pbrfit::brdf::direction_inputs(pairs[k].wi, pairs[k].wo);
     for (std::size_t c = 0; c < in.size(); ++c) out.data.inputs(Eigen::Index(r), Eigen::Index(c)) = in[c];
     out.data.target[Eigen::Index(r)] = material.value(channel, table.cells()[k]);
     const double w = table.squared_weights()[channel * table.size() + k];

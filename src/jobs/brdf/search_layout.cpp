@@ -14,7 +14,7 @@ store::ResultLayout BrdfSearchWorkload::layout() const {
                   "vs the size of the syntax tree";
   std::vector<std::string> materials;
   for (std::size_t m = 0; m < settings_.data->materials(); ++m) materials.push_back(settings_.data->name(m));
-  std::vector<std::string> inputs = brdf_input_names();
+  std::vector<std::string> inputs = pbrfit::brdf::direction_input_names();
   inputs.insert(inputs.end(), brdf_parameter_names().begin(), brdf_parameter_names().end());
   g.attributes = settings_.scene->attributes;
   g.attributes.insert({{"inputs", joined(inputs)},

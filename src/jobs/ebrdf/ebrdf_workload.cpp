@@ -50,7 +50,7 @@ std::vector<float> EbrdfWorkload::fit_tile(const TileItem& tile, const runtime::
       if (task.stop_requested()) throw runtime::Cancelled();
       const eb::MipTexel texel{tile.level, x, y};
       const auto contributing = sampler.contributing_texels(texel);
-      std::vector<ltc::Matrix3> fitted(views);
+      std::vector<Matrix3> fitted(views);
       for (std::size_t v = 0; v < views; ++v) {
         const auto samples = sampler.samples(contributing, v);
         RandomStream sgd_random = task.random((y * tile.side + x) * views + v);

@@ -18,7 +18,7 @@ std::shared_ptr<const eb::NormalMap> read_normals(const std::string& path) {
   const auto values = store::read_table(path, "ebrdf/normal_map/normal", &dims);
   if (dims.size() != 3 || dims[0] != dims[1] || dims[2] != 3 || !eb::is_power_of_two(dims[0]))
     throw InputError({path}, "ebrdf/normal_map/normal is not a square power-of-two map of normals");
-  std::vector<ltc::Vector3> normals(dims[0] * dims[1]);
+  std::vector<Vector3> normals(dims[0] * dims[1]);
   for (std::size_t i = 0; i < normals.size(); ++i) normals[i] = {values[3 * i], values[3 * i + 1], values[3 * i + 2]};
   return std::make_shared<const eb::NormalMap>(dims[0], std::move(normals));
 }

@@ -2,7 +2,6 @@
 // the job states (expression_problem.hpp).
 #include <cmath>
 
-#include "pbrfit/gp/expression_parser.hpp"
 #include "pbrfit/jobs/sweep/expression_problem.hpp"
 #include "pbrfit/jobs/sweep/objective_keys.hpp"
 #include "pbrfit/jobs/sweep/problem_catalogue.hpp"
@@ -67,14 +66,6 @@ void read_parameters(const spec::Section& sweep, ExpressionProblemSettings& s) {
   if (s.parameters.empty()) sweep.reject("parameters", "must state the model's parameters for problem 'expression'");
 }
 
-gp::ParsedExpression parsed(const spec::Section& e, const char* key, const gp::ExpressionNames& names) {
-  const auto result = gp::parse_expression(e.get_string(key), names);
-  if (const auto* error = std::get_if<gp::ExpressionError>(&result))
-    e.reject(key, "has an error at line " + std::to_string(error->line) + ", column " + std::to_string(error->column) +
-                      " of its expression: " + error->message);
-  return std::get<gp::ParsedExpression>(result);
-}
-
 }  // namespace
 
 spec::Schema expression_schema() {
@@ -100,9 +91,9 @@ std::unique_ptr<SweepProblem> make_expression(const spec::Section& sweep) {
   for (const auto& axis : s.axes) names.inputs.push_back(axis.name);
   s.target_text = e.get_string("target");
   s.model_text = e.get_string("model");
-  s.target = parsed(e, "target", names).program;
+  s.target = parse_expression_at(e, "target", names).program;
   for (const auto& p : s.parameters) names.parameters.push_back(p.name);
-  auto model = parsed(e, "model", names);
+  auto model = parse_expression_at(e, "model", names);
   s.model = model.program;
   s.parameter_slots = std::move(model.parameter_slots);
   s.p = norm_p(objective);

@@ -23,6 +23,14 @@ integrate::AdaptiveOptions integration(const spec::Section& s, double tolerance_
   return options;
 }
 
+gp::ParsedExpression parse_expression_at(const spec::Section& e, const char* key, const gp::ExpressionNames& names) {
+  const auto result = gp::parse_expression(e.get_string(key), names);
+  if (const auto* error = std::get_if<gp::ExpressionError>(&result))
+    e.reject(key, "has an error at line " + std::to_string(error->line) + ", column " + std::to_string(error->column) +
+                      " of its expression: " + error->message);
+  return std::get<gp::ParsedExpression>(result);
+}
+
 double coarse_tolerance(const spec::Section& s, double final_tolerance, double fallback) {
   const double coarse = s.given("coarse_tolerance") ? s.get_number("coarse_tolerance") : std::max(fallback, final_tolerance);
   if (coarse < final_tolerance) s.reject("coarse_tolerance", "must be at least 'tolerance'");

@@ -4,41 +4,13 @@
 #include <stdexcept>
 
 #include "pbrfit/core/error.hpp"
-#include "pbrfit/jobs/sweep/ltc_ggx_problem.hpp"
 #include "pbrfit/jobs/sweep/objective_keys.hpp"
 #include "pbrfit/jobs/sweep/multi_lobe_sg_problem.hpp"
 #include "pbrfit/jobs/sweep/parallax_problem.hpp"
 #include "pbrfit/jobs/sweep/sphere_light_problem.hpp"
-#include "pbrfit/store/atomic_file.hpp"
 
 namespace pbrfit::jobs::sweep {
 namespace {
-
-// The published table the LTC anchors compare with; null when the data file is not there.
-std::shared_ptr<const ltc::PublishedLtcTable> published_ltc_table() {
-  const std::string path = std::string(PBRFIT_DATA_DIR) + "/reference/ltc_ggx_heitz2016_64.csv";
-  static const std::shared_ptr<const ltc::PublishedLtcTable> table = [&]() -> std::shared_ptr<const ltc::PublishedLtcTable> {
-    try {
-      const Bytes bytes = store::read_whole_file(path, 4u << 20);
-      const std::string_view text(reinterpret_cast<const char*>(bytes.data()), bytes.size());
-      return std::make_shared<const ltc::PublishedLtcTable>(ltc::parse_published_ltc_table(text));
-    } catch (const InputError&) {
-      return nullptr;
-    } catch (const std::invalid_argument& e) {
-      throw RunError(path + ": " + e.what());
-    }
-  }();
-  return table;
-}
-
-std::unique_ptr<SweepProblem> make_ltc(const spec::Section& sweep) {
-  const auto& objective = sweep.get_section("objective");
-  LtcGgxSettings settings;
-  settings.objective_points = count_or(objective, "samples", settings.objective_points);
-  settings.metric_points = count_or(objective, "judge_samples", settings.metric_points);
-  settings.published = published_ltc_table();
-  return make_ltc_ggx_problem(settings);
-}
 
 std::unique_ptr<SweepProblem> make_sphere_light(const spec::Section& sweep) {
   const auto& objective = sweep.get_section("objective");
@@ -72,7 +44,10 @@ std::unique_ptr<SweepProblem> make_parallax(const spec::Section& sweep, Parallax
 
 const std::vector<ProblemEntry>& problem_catalogue() {
   static const std::vector<ProblemEntry> entries = {
-      {"ltc_ggx", "isotropic LTC table of GGX (Heitz et al. 2016)", {"samples", "judge_samples"}, make_ltc},
+      {"ltc_ggx", "isotropic LTC table of GGX (Heitz et al. 2016) on the published grid, beside the published table",
+       {"samples", "judge_samples", "polygon_quads", "polygon_tolerance", "fit_to"}, make_ltc_ggx},
+      {"ltc", "isotropic LTC tables of the built-in BRDF families, a BRDF expression or a measured material",
+       {"samples", "judge_samples", "polygon_quads", "polygon_tolerance", "fit_to"}, make_ltc},
       {"sphere_light", "GGX lit by a spherical light: roughness modification, capped, representative point models",
        {"norm", "tolerance", "max_evaluations", "views"}, make_sphere_light},
       {"multi_lobe_sg", "multi-lobe spherical Gaussian kernel for GGX environment lighting", {"samples", "lobes"},
@@ -105,6 +80,9 @@ spec::Schema objective_schema() {
   spec::Schema s("objective");
   s.integer("samples", "points per sampling strategy of the objective's quasi-Monte Carlo estimate").range(16, 1 << 22);
   s.integer("judge_samples", "points per strategy of the finer estimate the reported errors use").range(16, 1 << 22);
+  s.integer("polygon_quads", "quad lights the polygon-lighting errors are measured with (0: none)").range(0, 4096);
+  s.number("polygon_tolerance", "relative tolerance of the lobe's integral over each quad light").range(1e-8, 0.1);
+  s.choice("fit_to", {"lobe", "lights"}, "what an LTC is fitted to: its lobe (the cubed error), or refined on quad lights");
   s.choice("norm", {"L1", "L2", "L3", "Linf"}, "the error norm between target and model");
   s.choice("integrator", {"adaptive", "qmc"}, "adaptive cubature at the optimizer's tolerance, or fixed QMC points");
   s.number("tolerance", "absolute (or, where the problem says so, relative) tolerance of the error's integrals")

@@ -199,6 +199,7 @@ SweepSettings sweep_settings(const spec::Section& s) {
   const ProblemEntry& entry = find_problem(s.get_string("problem"));
   reject_unused_objective_keys(s.get_section("objective"), entry);
   if (entry.name != "expression") reject_expression_keys(s);
+  if (entry.name != "ltc" && s.given("brdf")) s.reject("brdf", "applies to problem 'ltc' only");
   SweepSettings settings;
   settings.problem = entry.make(s);
   const auto models = settings.problem->models();

@@ -65,6 +65,7 @@ spec::Schema sweep_schema() {
   s.section("fit", fit_schema(), "how each cell is fitted");
   s.section("objective", objective_schema(), "the problem's error estimate (keys depend on the problem)");
   s.section("expression", expression_schema(), "problem 'expression': the domain, the target and the model");
+  s.section("brdf", brdf_schema(), "problem 'ltc': a BRDF expression or a measured material to tabulate");
   return s;
 }
 

@@ -11,6 +11,8 @@
 #include "pbrfit/integrate/direction_domain.hpp"
 
 using namespace pbrfit::brdf;
+using pbrfit::Vector3;
+using pbrfit::Matrix3;
 using pbrfit::integrate::AdaptiveOptions;
 
 namespace {

@@ -10,8 +10,8 @@
 
 using namespace pbrfit::ebrdf;
 using pbrfit::RandomStream;
-using pbrfit::ltc::Matrix3;
-using pbrfit::ltc::Vector3;
+using pbrfit::Matrix3;
+using pbrfit::Vector3;
 
 namespace {
 

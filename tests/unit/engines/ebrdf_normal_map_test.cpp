@@ -7,7 +7,7 @@
 #include "pbrfit/ebrdf/procedural_normal_maps.hpp"
 
 using namespace pbrfit::ebrdf;
-using pbrfit::ltc::Vector3;
+using pbrfit::Vector3;
 
 TEST_CASE("normal maps decode the 8-bit encoding, wrap, and lift normals above the horizon") {
   const std::vector<std::uint8_t> rgb = {128, 128, 255, 255, 128, 128, 0, 128, 128, 128, 128, 128};

@@ -11,8 +11,8 @@
 #include "pbrfit/ebrdf/plane_scene.hpp"
 
 using namespace pbrfit::ebrdf;
-using pbrfit::ltc::Matrix3;
-using pbrfit::ltc::Vector3;
+using pbrfit::Matrix3;
+using pbrfit::Vector3;
 
 namespace {
 

@@ -13,7 +13,7 @@
 
 using namespace pbrfit::ebrdf;
 using pbrfit::RandomStream;
-using pbrfit::ltc::Vector3;
+using pbrfit::Vector3;
 
 namespace {
 

@@ -13,6 +13,8 @@
 #include "pbrfit/ltc/sliced_wasserstein.hpp"
 
 using namespace pbrfit::ltc;
+using pbrfit::Vector3;
+using pbrfit::Matrix3;
 using pbrfit::RandomStream;
 
 namespace {

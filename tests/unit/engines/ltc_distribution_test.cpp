@@ -11,6 +11,8 @@
 #include "pbrfit/ltc/distribution.hpp"
 
 using namespace pbrfit::ltc;
+using pbrfit::Vector3;
+using pbrfit::Matrix3;
 using pbrfit::RandomStream;
 using pbrfit::test::integrate_over_sphere;
 

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "ltc_reference_table.hpp"
+#include "pbrfit/brdf/ggx_lobe.hpp"
 #include "pbrfit/ltc/distribution.hpp"
 #include "pbrfit/ltc/fit_error.hpp"
 #include "pbrfit/ltc/ggx_table.hpp"
@@ -12,6 +13,7 @@
 #include "pbrfit/ltc/shader_form.hpp"
 
 using namespace pbrfit::ltc;
+using pbrfit::Vector3;
 
 namespace {
 
@@ -28,13 +30,13 @@ CellFitOptions small_fit() {
 FitError published_error(const GgxTableLayout& layout, const TableCell& cell, double amplitude) {
   static const auto published = pbrfit::test::read_published_ltc_table(pbrfit::test::published_ltc_table_path());
   const ShaderForm form = published[layout.flat_index(cell)].ltc1;
-  const GgxTarget target(layout.alpha(cell), layout.cos_theta_view(cell));
+  const auto target = std::make_shared<pbrfit::brdf::GgxLobe>(layout.alpha(cell), layout.cos_theta_view(cell));
   return FitErrorEstimator(target, small_fit().metric_points)
       .errors(LtcDistribution(matrix_from_shader_form(form), amplitude));
 }
 
 CellFit fit_cell(const GgxTableLayout& layout, const TableCell& cell, const IsotropicParameters& start) {
-  return fit_isotropic_cell(layout.alpha(cell), layout.cos_theta_view(cell), start, small_fit());
+  return fit_isotropic_cell(std::make_shared<pbrfit::brdf::GgxLobe>(layout.alpha(cell), layout.cos_theta_view(cell)), start, small_fit());
 }
 
 void check_not_worse_than_published(const GgxTableLayout& layout, const TableCell& cell, const CellFit& fit) {

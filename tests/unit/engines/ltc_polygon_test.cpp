@@ -12,6 +12,9 @@
 #include "pbrfit/ltc/sphere_form_factor.hpp"
 
 using namespace pbrfit::ltc;
+using pbrfit::Matrix3;
+using pbrfit::Frame;
+using pbrfit::Vector3;
 using pbrfit::integrate::AdaptiveOptions;
 using pbrfit::integrate::Box;
 

@@ -10,6 +10,8 @@
 #include "pbrfit/ltc/sphere_form_factor.hpp"
 
 using namespace pbrfit::ltc;
+using pbrfit::Vector3;
+using pbrfit::Matrix3;
 
 TEST_CASE("The 4-number shader form round-trips to the matrix up to scale", "[ltc]") {
   const Vector3 lobe = Vector3(-0.4, 0.0, 0.9).normalized();

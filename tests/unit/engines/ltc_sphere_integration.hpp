@@ -8,11 +8,11 @@
 #include <vector>
 
 #include "pbrfit/integrate/adaptive_cubature.hpp"
-#include "pbrfit/ltc/vector.hpp"
+#include "pbrfit/geometry/vector.hpp"
 
 namespace pbrfit::test {
 
-inline ltc::Vector3 sphere_direction(double u, double phi) {
+inline Vector3 sphere_direction(double u, double phi) {
   const double radius = std::sqrt(std::max(0.0, 1.0 - u * u));
   return {radius * std::cos(phi), radius * std::sin(phi), u};
 }

@@ -12,7 +12,7 @@
 
 using namespace pbrfit::brdf;
 using Catch::Matchers::WithinAbs;
-using pbrfit::ltc::Vector3;
+using pbrfit::Vector3;
 
 namespace {
 
@@ -77,4 +77,26 @@ TEST_CASE("a neural stand-in with zero weights is exp(0) - 1 = 0; shapes are che
   CHECK_THAT(rgb[2], WithinAbs(std::expm1(2.0), 1e-15));
   w.b3.pop_back();
   CHECK_THROWS_AS(NeuralBrdf(w), std::invalid_argument);
+}
+
+TEST_CASE("Interpolated MERL values match the cells at their centres, blend between them and skip gaps", "[brdf]") {
+  using namespace pbrfit::brdf;
+  MerlTable table;
+  for (std::size_t c = 0; c < merl_cells; ++c) {
+    const MerlCell cell = merl_cell_at(c);
+    for (std::size_t k = 0; k < 3; ++k) table.set(k, c, double(cell.theta_h) + 0.01 * double(cell.theta_d) + double(k));
+  }
+  const MerlCell cell{40, 20, 30};
+  const auto pair = from_half_diff(merl_centre_of(cell));
+  const auto at_centre = table.interpolate(pair.wi, pair.wo);
+  for (std::size_t k = 0; k < 3; ++k) CHECK(std::abs(at_centre[k] - table.value(k, cell.flat())) < 1e-9);
+  // Halfway in theta_d between two cells: the mean of their values.
+  HalfDiff between = merl_centre_of(cell);
+  between.theta_d = (21.0 / 90.0) * 0.5 * std::numbers::pi;
+  const auto halfway = from_half_diff(between);
+  CHECK(std::abs(table.interpolate(halfway.wi, halfway.wo)[0] - (40.0 + 0.01 * 20.5)) < 1e-9);
+  // An unmeasured neighbour drops out: the value is the measured one's.
+  const MerlCell gap{40, 21, 30};
+  for (std::size_t k = 0; k < 3; ++k) table.set(k, gap.flat(), std::nan(""));
+  CHECK(std::abs(table.interpolate(halfway.wi, halfway.wo)[0] - (40.0 + 0.01 * 20.0)) < 1e-9);
 }

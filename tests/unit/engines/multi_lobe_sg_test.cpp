@@ -13,7 +13,7 @@
 #include "pbrfit/optimize/parameter_space.hpp"
 
 using namespace pbrfit::brdf;
-using pbrfit::ltc::Vector3;
+using pbrfit::Vector3;
 
 namespace {
 

@@ -20,7 +20,7 @@ using Catch::Matchers::WithinAbs;
 using Catch::Matchers::WithinRel;
 using pbrfit::RgbImage;
 using pbrfit::brdf::merl_cells;
-using pbrfit::ltc::Vector3;
+using pbrfit::Vector3;
 
 namespace {
 

@@ -14,7 +14,7 @@ using namespace pbrfit::render;
 using Catch::Matchers::WithinAbs;
 using Catch::Matchers::WithinRel;
 using pbrfit::RgbImage;
-using pbrfit::ltc::Vector3;
+using pbrfit::Vector3;
 
 namespace {
 

@@ -11,7 +11,7 @@
 
 using namespace pbrfit::brdf;
 using pbrfit::integrate::AdaptiveOptions;
-using pbrfit::ltc::Vector3;
+using pbrfit::Vector3;
 
 namespace {
 

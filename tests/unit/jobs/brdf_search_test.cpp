@@ -27,7 +27,7 @@ using namespace pbrfit::jobs::brdf;
 namespace {
 
 gp::SyntaxTree tree_of_text(const std::string& text) {
-  const auto p = std::get<gp::ParsedExpression>(gp::parse_expression(text, {brdf_input_names(), brdf_parameter_names()}));
+  const auto p = std::get<gp::ParsedExpression>(gp::parse_expression(text, {pbrfit::brdf::direction_input_names(), brdf_parameter_names()}));
   return gp::tree_of(p.program, p.parameter_slots);
 }
 
@@ -63,9 +63,9 @@ TEST_CASE("the paper's found BRDFs evaluate as its equations 6 and 7 print them"
   const double kd = p[0], ks = p[1], alpha = p[2], beta = p[3];
   const auto metal = analytic_brdf(compiled(tree_of_text(find_seed("brady_metal")->expression)), {p, p, p});
   const auto dielectric = analytic_brdf(compiled(tree_of_text(find_seed("brady_dielectric")->expression)), {p, p, p});
-  for (const auto& [l, v] : {std::pair{ltc::Vector3(0.3, 0.1, 0.9), ltc::Vector3(-0.2, 0.3, 0.8)},
-                             std::pair{ltc::Vector3(0.7, 0.0, 0.4), ltc::Vector3(-0.6, 0.2, 0.5)}}) {
-    const ltc::Vector3 wi = l.normalized(), wo = v.normalized(), h = (wi + wo).normalized();
+  for (const auto& [l, v] : {std::pair{Vector3(0.3, 0.1, 0.9), Vector3(-0.2, 0.3, 0.8)},
+                             std::pair{Vector3(0.7, 0.0, 0.4), Vector3(-0.6, 0.2, 0.5)}}) {
+    const Vector3 wi = l.normalized(), wo = v.normalized(), h = (wi + wo).normalized();
     const double nl = wi.z(), nv = wo.z(), nh = h.z(), vh = wo.dot(h), delta = std::acos(nh);
     const double metal_expected = kd / pi + ks * std::exp(-delta / beta) *
                                                 std::min(alpha / kd * vh, 4 * beta / (std::tan(delta) * nv * nl)) *

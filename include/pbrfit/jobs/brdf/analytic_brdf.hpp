@@ -1,5 +1,5 @@
 #pragma once
-// A compiled BRDF expression (gp/syntax_tree.hpp) of the inputs of brdf_inputs.hpp with fitted parameters
+// A compiled BRDF expression (gp/syntax_tree.hpp) of the inputs of brdf_inputs.hpp (brdf/direction_inputs.hpp) with fitted parameters
 // per colour channel, as a renderable BRDF (render/brdf_function.hpp).
 //
 // Invariants: channel c evaluates the program with parameters[c] in its parameter slots (double precision,

@@ -1,5 +1,5 @@
 #pragma once
-// The analytic BRDFs a search starts from, as expression texts of the inputs of brdf_inputs.hpp and the
+// The analytic BRDFs a search starts from, as expression texts of the inputs of brdf_inputs.hpp (brdf/direction_inputs.hpp) and the
 // parameters p0..p3 (fitted per material and channel):
 //  - cook_torrance, equation 5 of Brady et al. as printed: p0 = k_d, p1 = k_s, p2 = m, p3 = R0;
 //    D = exp(-(tan(delta) / m)^2) / (m^2 cos^4 delta), delta = acos(n.h); G = min(1, 2 nh nv / vh, 2 nh nl / vh);

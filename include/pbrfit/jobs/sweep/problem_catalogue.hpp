@@ -31,4 +31,10 @@ spec::Schema objective_schema();
 std::unique_ptr<SweepProblem> make_expression(const spec::Section& sweep);
 spec::Schema expression_schema();
 
+// Problems `ltc` and `ltc_ggx` (ltc_problem.hpp) from the job's `sweep` section; `brdf` is the section of
+// problem `ltc` that names an expression BRDF or a measured material instead of the built-in families.
+std::unique_ptr<SweepProblem> make_ltc(const spec::Section& sweep);
+std::unique_ptr<SweepProblem> make_ltc_ggx(const spec::Section& sweep);
+spec::Schema brdf_schema();
+
 }  // namespace pbrfit::jobs::sweep

@@ -11,7 +11,6 @@
 namespace pbrfit::jobs::sweep {
 namespace {
 
-using ltc::Vector3;
 using Model = std::function<double(const Vector3&)>;
 
 enum ModelIndex : std::size_t { roughness_modification, capped_roughness, representative_point, smoothed_point };

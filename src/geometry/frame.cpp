@@ -1,8 +1,8 @@
 #include <cmath>
 
-#include "pbrfit/ltc/vector.hpp"
+#include "pbrfit/geometry/vector.hpp"
 
-namespace pbrfit::ltc {
+namespace pbrfit {
 
 Frame Frame::from_z(const Vector3& n) {
   const double sign = std::copysign(1.0, n.z());
@@ -21,4 +21,4 @@ Matrix3 Frame::matrix() const {
   return columns;
 }
 
-}  // namespace pbrfit::ltc
+}  // namespace pbrfit

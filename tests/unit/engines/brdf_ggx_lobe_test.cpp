@@ -7,10 +7,12 @@
 #include "pbrfit/brdf/ggx.hpp"
 #include "pbrfit/brdf/split_sum_dfg.hpp"
 #include "pbrfit/core/random_stream.hpp"
-#include "pbrfit/ltc/ggx_moments.hpp"
-#include "pbrfit/ltc/ggx_target.hpp"
+#include "pbrfit/brdf/ggx_lobe.hpp"
+#include "pbrfit/ltc/lobe_moments.hpp"
 
 using namespace pbrfit::ltc;
+using pbrfit::Vector3;
+using pbrfit::brdf::GgxLobe;
 using pbrfit::RandomStream;
 using pbrfit::brdf::SmithVisibility;
 using pbrfit::test::integrate_over_sphere;
@@ -29,7 +31,7 @@ constexpr std::array<Configuration, 4> configurations{
 
 TEST_CASE("The visible-normal sampling density integrates to 1 over the sphere", "[ltc]") {
   for (const Configuration& c : configurations) {
-    const GgxTarget target(c.alpha, c.cos_theta_view);
+    const GgxLobe target(c.alpha, c.cos_theta_view);
     const auto integral =
         integrate_over_sphere<1>([&](const Vector3& l) { return std::array{target.evaluate(l).pdf}; }, 1e-8);
     CAPTURE(c.alpha, c.cos_theta_view);
@@ -41,7 +43,7 @@ TEST_CASE("The visible-normal sampling density integrates to 1 over the sphere",
 TEST_CASE("The target is D G2 / (4 cos theta_v) and its ratio to the density is G2 / G1", "[ltc]") {
   RandomStream random(11, 0);
   for (const Configuration& c : configurations) {
-    const GgxTarget target(c.alpha, c.cos_theta_view);
+    const GgxLobe target(c.alpha, c.cos_theta_view);
     const Vector3& v = target.view();
     for (int i = 0; i < 50; ++i) {
       const double u = random.uniform();
@@ -50,7 +52,7 @@ TEST_CASE("The target is D G2 / (4 cos theta_v) and its ratio to the density is 
       const double g2 =
           pbrfit::brdf::smith_masking_shadowing(SmithVisibility::height_correlated, c.alpha, v.z(), l.z());
       const double expected = pbrfit::brdf::ggx_distribution(c.alpha, h.z()) * g2 / (4.0 * v.z());
-      const GgxTarget::Evaluation e = target.evaluate(l);
+      const GgxLobe::Evaluation e = target.evaluate(l);
       CHECK(std::abs(e.value - expected) <= 1e-12 * (1.0 + expected));
       CHECK(std::abs(e.value - e.pdf * g2 / target.view_masking()) <= 1e-12 * (1.0 + expected));
     }
@@ -59,7 +61,7 @@ TEST_CASE("The target is D G2 / (4 cos theta_v) and its ratio to the density is 
 
 TEST_CASE("Visible-normal samples follow the density", "[ltc]") {
   for (const Configuration& c : configurations) {
-    const GgxTarget target(c.alpha, c.cos_theta_view);
+    const GgxLobe target(c.alpha, c.cos_theta_view);
     const auto g = [](const Vector3& l) { return std::array{l.z() + 1.0, l.x() * l.x(), std::exp(l.x())}; };
     const auto expected = integrate_over_sphere<3>(
         [&](const Vector3& l) {
@@ -91,8 +93,8 @@ TEST_CASE("Visible-normal samples follow the density", "[ltc]") {
 
 TEST_CASE("Albedo and Fresnel term match the independent split-sum integrator", "[ltc]") {
   for (const Configuration& c : configurations) {
-    const GgxTarget target(c.alpha, c.cos_theta_view);
-    const GgxMoments moments = measure_moments(target, 4096);
+    const GgxLobe target(c.alpha, c.cos_theta_view);
+    const LobeMoments moments = measure_moments(target, 4096);
     const auto dfg = pbrfit::brdf::integrate_dfg(c.cos_theta_view, c.alpha, SmithVisibility::height_correlated,
                                                  pbrfit::integrate::AdaptiveOptions{1e-9});
     CAPTURE(c.alpha, c.cos_theta_view, moments.albedo, dfg.scale + dfg.bias);
@@ -103,7 +105,7 @@ TEST_CASE("Albedo and Fresnel term match the independent split-sum integrator", 
 
 TEST_CASE("The average direction matches cubature and lies in the x-z plane on the mirror side", "[ltc]") {
   for (const Configuration& c : configurations) {
-    const GgxTarget target(c.alpha, c.cos_theta_view);
+    const GgxLobe target(c.alpha, c.cos_theta_view);
     const auto first_moment = integrate_over_sphere<3>(
         [&](const Vector3& l) {
           const double value = target.evaluate(l).value;
@@ -120,7 +122,7 @@ TEST_CASE("The average direction matches cubature and lies in the x-z plane on t
 }
 
 TEST_CASE("The target rejects alpha <= 0 and views at or below the horizon", "[ltc]") {
-  CHECK_THROWS_AS(GgxTarget(0.0, 0.5), std::invalid_argument);
-  CHECK_THROWS_AS(GgxTarget(0.5, 0.0), std::invalid_argument);
-  CHECK_THROWS_AS(GgxTarget(0.5, 1.5), std::invalid_argument);
+  CHECK_THROWS_AS(GgxLobe(0.0, 0.5), std::invalid_argument);
+  CHECK_THROWS_AS(GgxLobe(0.5, 0.0), std::invalid_argument);
+  CHECK_THROWS_AS(GgxLobe(0.5, 1.5), std::invalid_argument);
 }

@@ -1,12 +1,13 @@
 #pragma once
-// The vector types of the LTC module and an orthonormal frame. Directions are unit vectors in the shading
-// frame (z = the surface normal) unless a name says otherwise; matrices act on column vectors.
+// The geometry every engine shares: 3-vectors, 3x3 matrices and an orthonormal frame. Directions are unit
+// vectors in the shading frame (z = the surface normal) unless a name says otherwise; matrices act on
+// column vectors.
 //
 // Invariant of Frame: x, y, z are orthonormal and right-handed (x cross y = z), so to_local and from_local
 // are inverse rotations and matrix() (columns x, y, z) is a rotation.
 #include <Eigen/Dense>
 
-namespace pbrfit::ltc {
+namespace pbrfit {
 
 using Vector3 = Eigen::Vector3d;
 using Matrix3 = Eigen::Matrix3d;
@@ -24,4 +25,4 @@ struct Frame {
   Matrix3 matrix() const;
 };
 
-}  // namespace pbrfit::ltc
+}  // namespace pbrfit

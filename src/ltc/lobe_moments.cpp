@@ -1,4 +1,4 @@
-#include "pbrfit/ltc/ggx_moments.hpp"
+#include "pbrfit/ltc/lobe_moments.hpp"
 
 #include <cmath>
 
@@ -7,22 +7,22 @@
 
 namespace pbrfit::ltc {
 
-GgxMoments measure_moments(const GgxTarget& target, std::size_t points) {
+LobeMoments measure_moments(const brdf::Lobe& lobe, std::size_t points) {
   integrate::CompensatedSum albedo;
   integrate::CompensatedSum fresnel;
   Vector3 direction = Vector3::Zero();
   for (const auto& [u1, u2] : golden_lattice(points)) {
-    const Vector3 l = target.sample(u1, u2);
-    const GgxTarget::Evaluation evaluation = target.evaluate(l);
+    const Vector3 l = lobe.sample(u1, u2);
+    const brdf::Lobe::Evaluation evaluation = lobe.evaluate(l);
     if (!(evaluation.pdf > 0.0) || evaluation.value == 0.0) continue;
     const double weight = evaluation.value / evaluation.pdf;
-    const double schlick = std::pow(1.0 - std::max(0.0, target.view().dot((target.view() + l).normalized())), 5.0);
+    const double schlick = std::pow(1.0 - std::max(0.0, lobe.view().dot((lobe.view() + l).normalized())), 5.0);
     albedo.add(weight);
     fresnel.add(weight * schlick);
     direction += weight * l;
   }
   const double count = static_cast<double>(points);
-  GgxMoments moments;
+  LobeMoments moments;
   moments.albedo = albedo.value() / count;
   moments.fresnel = fresnel.value() / count;
   direction.y() = 0.0;
