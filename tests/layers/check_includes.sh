@@ -40,5 +40,13 @@ for dir in src/*/ include/pbrfit/*/; do
     status=1
   fi
 done
+# Within the engines: ltc fits the lobes brdf provides, so brdf (and geometry below it) never reaches ltc.
+for dir in src/brdf include/pbrfit/brdf src/geometry include/pbrfit/geometry; do
+  if hits=$(grep -rnE '^[[:space:]]*#[[:space:]]*include[[:space:]]*"pbrfit/ltc/' "$dir"); then
+    echo "FAIL: $dir includes the ltc engine, which sits above it:"
+    echo "$hits"
+    status=1
+  fi
+done
 [[ $status -eq 0 ]] && echo "PASS: every layer includes only the libraries it may use"
 exit $status
