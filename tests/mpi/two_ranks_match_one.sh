@@ -23,4 +23,27 @@ done
 h5dump -a /job_yaml two.h5 | grep -q "separable_schlick" || fail "job_yaml does not hold the job text"
 h5dump -a /dfg/scale/DIMENSION_LIST two.h5 >/dev/null || fail "scale has no dimension scales attached"
 h5dump -d /dfg/n_dot_v two.h5 | grep -q "0, 0.0322581" || fail "n_dot_v axis is not at the edges"
+
+note "the cloth channel, on 1 and 2 ranks and interrupted"
+cat > cloth.yaml <<'YAML'
+name: cloth
+kind: lut
+output: result.h5
+checkpoint: {interval_items: 3}
+lut: {function: dfg, cloth: true, multiple_scattering: true, resolution: [24, 16], samples: edges}
+YAML
+run_ranks 1 run cloth.yaml --output cloth-one.h5 -q
+expect_status 0
+run_ranks 2 run cloth.yaml --output cloth-two.h5 -q
+expect_status 0
+expect_identical cloth-one.h5 cloth-two.h5 /dfg
+/usr/bin/python3 -c "
+import h5py, numpy as np
+g = h5py.File('cloth-two.h5', 'r')['dfg']
+c = g['cloth'][...]
+assert c.shape == (16, 24) and np.isfinite(c).all() and (c >= 0).all(), c
+assert (g['cloth_error_estimate'][...] <= 1e-6).all()
+assert c[0].max() == 0.0, 'roughness 0 (alpha 0) has no sheen albedo'
+assert 0.1 < c[-1, -1] < 1.0, c[-1, -1]
+" || fail "the cloth channel is wrong"
 echo "PASS"

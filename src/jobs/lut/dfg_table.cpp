@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "pbrfit/brdf/cloth_albedo.hpp"
 #include "pbrfit/brdf/split_sum_dfg.hpp"
 #include "pbrfit/core/error.hpp"
 
@@ -54,7 +55,8 @@ store::ResultLayout DfgTable::layout() const {
                       {"tolerance", format_number(settings_.integration.abs_tolerance)},
                       {"integrator", "globally adaptive tensor-product Gauss-Kronrod 7-15 over the half-vector "
                                      "hemisphere above the horizon"},
-                      {"multiple_scattering", settings_.multiple_scattering ? "true" : "false"}};
+                      {"multiple_scattering", settings_.multiple_scattering ? "true" : "false"},
+                      {"cloth", settings_.cloth ? "true" : "false"}};
   group.axes = {{r, roughness_, r + " (" + brdf::formula(settings_.roughness) + "), " + placement},
                 {"n_dot_v", n_dot_v_, "cosine between normal and view direction, " + placement}};
   const std::vector<std::string> grid = {r, "n_dot_v"};
@@ -70,6 +72,16 @@ store::ResultLayout DfgTable::layout() const {
     group.tables.push_back({"average_energy", {r},
                             "Kulla-Conty average albedo E_avg = 2 * integral of E(mu) mu dmu; multiple-scattering "
                             "lobe f_ms = (1 - E(mu_o))(1 - E(mu_i)) / (pi (1 - E_avg))"});
+  }
+  if (settings_.cloth) {
+    group.attributes["cloth_lobe"] =
+        "Charlie sheen D (Estevez & Kulla 2017) with V = 1 / (4 (n.l + n.v - n.l n.v)) (Neubelt & Pettineo 2013), "
+        "F = 1, alpha as the row's: Filament cmgen's DFV_Charlie_Uniform";
+    group.tables.push_back({"cloth", grid,
+                            "directional albedo of the cloth (sheen) lobe: integral of D_Charlie V_Neubelt (n.l) dl; "
+                            "Filament's DFG LUT holds it in its blue channel"});
+    group.tables.push_back({"cloth_error_estimate", grid, "absolute error estimate of the cloth integral"});
+    group.tables.push_back({"cloth_evaluations", grid, "integrand evaluations spent on the cloth entry"});
   }
   return {{group}};
 }
@@ -97,6 +109,14 @@ Bytes DfgTable::compute(const runtime::ItemTask& task) const {
     row.bias.push_back(entry.bias);
     row.error_estimate.push_back(entry.error_estimate);
     row.evaluations.push_back(double(entry.evaluations));
+    if (settings_.cloth) {
+      const auto cloth = brdf::integrate_cloth_albedo(mu, a, settings_.integration);
+      require_converged(cloth.converged, cloth.error_estimate, cloth.evaluations,
+                        "cloth entry (n_dot_v " + format_number(mu) + ", " + r + ")");
+      row.cloth.push_back(cloth.value);
+      row.cloth_error.push_back(cloth.error_estimate);
+      row.cloth_evaluations.push_back(double(cloth.evaluations));
+    }
   }
   if (settings_.multiple_scattering) {
     const auto average = brdf::integrate_average_albedo(a, settings_.visibility, settings_.integration);
@@ -113,6 +133,8 @@ Bytes DfgTable::encode(const Row& row) const {
     out.put_array(std::span<const double>(*v));
   out.put(row.average_energy);
   out.put(row.average_energy_error);
+  if (settings_.cloth)
+    for (const auto* v : {&row.cloth, &row.cloth_error, &row.cloth_evaluations}) out.put_array(std::span<const double>(*v));
   return out.take();
 }
 
@@ -125,6 +147,12 @@ DfgTable::Row DfgTable::decode(const Bytes& bytes) const {
   }
   row.average_energy = in.get<double>();
   row.average_energy_error = in.get<double>();
+  if (settings_.cloth) {
+    for (auto* v : {&row.cloth, &row.cloth_error, &row.cloth_evaluations}) {
+      *v = in.get_array<double>();
+      if (v->size() != n_dot_v_.size()) throw RunError("DFG row result has the wrong length");
+    }
+  }
   return row;
 }
 
@@ -146,6 +174,11 @@ std::vector<store::Block> DfgTable::blocks(WorkItemId id, const Bytes& result) c
     out.push_back(row_block("energy", std::move(energy)));
     out.push_back(cell_block("average_energy", row.average_energy));
   }
+  if (settings_.cloth) {
+    out.push_back(row_block("cloth", row.cloth));
+    out.push_back(row_block("cloth_error_estimate", row.cloth_error));
+    out.push_back(row_block("cloth_evaluations", row.cloth_evaluations));
+  }
   return out;
 }
 
@@ -157,6 +190,10 @@ void DfgTable::fold_summary(Bytes& summary, WorkItemId, const Bytes& result) con
     sum.above_tolerance += row.error_estimate[i] > settings_.integration.abs_tolerance;
     sum.evaluations += row.evaluations[i];
     ++sum.entries;
+    if (settings_.cloth) {
+      sum.worst_error = std::max(sum.worst_error, row.cloth_error[i]);
+      sum.above_tolerance += row.cloth_error[i] > settings_.integration.abs_tolerance;
+    }
   }
   runtime::store_summary(summary, sum);
 }

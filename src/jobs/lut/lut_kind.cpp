@@ -19,6 +19,9 @@ spec::Schema lut_schema() {
       .defaults_to(std::string("height_correlated"));
   s.boolean("multiple_scattering", "also tabulate E(n.v) and the Kulla-Conty average albedo per roughness")
       .defaults_to(false);
+  s.boolean("cloth", "also tabulate the cloth channel: the albedo of Charlie sheen with Neubelt's visibility, as "
+                     "Filament's cmgen computes it, alpha from the same roughness axis")
+      .defaults_to(false);
   s.choice("roughness", {"perceptual", "linear", "gloss"},
            "roughness axis: perceptual (alpha = r^2), linear (alpha = r), gloss (alpha = (1 - g)^4, Narkowicz)")
       .defaults_to(std::string("perceptual"));
@@ -51,6 +54,7 @@ DfgSettings dfg_settings(const spec::Section& lut) {
   s.visibility = visibility_from(lut.get_string("visibility"));
   s.roughness = roughness_from(lut.get_string("roughness"));
   s.multiple_scattering = lut.get_bool("multiple_scattering");
+  s.cloth = lut.get_bool("cloth");
   const auto& resolution = lut.get_int_list("resolution");
   s.n_dot_v_count = std::size_t(resolution[0]);
   s.roughness_count = std::size_t(resolution[1]);
@@ -64,7 +68,7 @@ DfgSettings dfg_settings(const spec::Section& lut) {
 
 // disney_diffuse: the DFG-only keys are refused, so a key never silently does nothing.
 DisneyDiffuseSettings disney_settings(const spec::Section& lut) {
-  for (const char* key : {"visibility", "multiple_scattering", "roughness"})
+  for (const char* key : {"visibility", "multiple_scattering", "roughness", "cloth"})
     if (lut.given(key)) lut.reject(key, "applies to function 'dfg' only");
   const DfgSettings common = dfg_settings(lut);
   DisneyDiffuseSettings s;

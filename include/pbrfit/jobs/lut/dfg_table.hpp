@@ -1,6 +1,7 @@
 #pragma once
 // The split-sum DFG table as a workload: one work item per roughness row, each integrating every
-// n.v entry of the row (and, with multiple scattering, the row's Kulla-Conty average albedo).
+// n.v entry of the row (and, with multiple scattering, the row's Kulla-Conty average albedo; with cloth, the
+// cloth channel of brdf/cloth_albedo.hpp at every entry).
 #include <cstddef>
 #include <vector>
 
@@ -16,6 +17,7 @@ struct DfgSettings {
   brdf::SmithVisibility visibility = brdf::SmithVisibility::height_correlated;
   brdf::RoughnessParametrization roughness = brdf::RoughnessParametrization::perceptual;
   bool multiple_scattering = false;
+  bool cloth = false;
   std::size_t n_dot_v_count = 128;
   std::size_t roughness_count = 128;
   Placement placement = Placement::centres;
@@ -39,6 +41,7 @@ class DfgTable final : public runtime::Workload {
     std::vector<double> scale, bias, error_estimate, evaluations;
     double average_energy = 0.0;
     double average_energy_error = 0.0;
+    std::vector<double> cloth, cloth_error, cloth_evaluations;  // with cloth only
   };
   // What the headline reports, folded row by row.
   struct Summary {
