@@ -5,7 +5,7 @@ MPIRUN ?= mpirun
 # memory only (no probing for network transports) saves about 0.2 s of start-up on one machine.
 MPIRUN_FLAGS ?= $(if $(filter 0,$(shell id -u)),--allow-run-as-root,) --oversubscribe --mca pml ob1 --mca btl self,vader
 
-.PHONY: demo test build deps bench bench-ltc bench-brdf bench-ebrdf soak clean
+.PHONY: demo test build web-deps deps bench bench-ltc bench-brdf bench-ebrdf soak clean
 
 demo: build
 	$(MPIRUN) $(MPIRUN_FLAGS) -np 2 $(BUILD)/pbrfit run jobs/quickstart.yaml
@@ -15,7 +15,7 @@ demo: build
 	@echo "The table is in results/quickstart.h5 (group /dfg; layout in docs/results-lut.md)."
 	@echo "Look inside:  h5ls -r results/quickstart.h5   or   h5dump -d /dfg/scale results/quickstart.h5"
 
-test: build
+test: build web-deps
 	.ci/install-deps --slurm || echo "pbrfit: the Slurm packages could not be installed; the cluster test will say it is skipped"
 	cd $(BUILD) && { ctest --output-on-failure; status=$$?; \
 	  grep -h "^SKIP:" Testing/Temporary/LastTest.log || true; \
@@ -47,6 +47,12 @@ bench-ebrdf: build
 # Fault injection, 20 rounds of each fault (about 15 minutes; not part of test). Figures: docs/RELIABILITY.md.
 soak: build
 	PBRFIT=$(abspath $(BUILD))/pbrfit PBRFIT_SOURCE_DIR=$(CURDIR) tests/soak/fault_soak.sh 20
+
+# The npm packages of the browser and node tests (tests/web/package.json): three.js, playwright-core, ktx-parse.
+web-deps:
+	.ci/install-deps --web
+	mkdir -p $(BUILD)/web && cp tests/web/package.json tests/web/package-lock.json $(BUILD)/web/
+	cd $(BUILD)/web && { [ -d node_modules ] && npm ls --silent >/dev/null 2>&1 || npm ci --no-audit --no-fund --loglevel=error; }
 
 build: deps
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release

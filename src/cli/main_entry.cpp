@@ -46,16 +46,26 @@ int main_entry(int argc, char** argv) {
                          "path with .h5 replaced by .report)");
 
   ExportOptions export_options;
-  auto* export_cmd = app.add_subcommand("export", "a member of a symbolic-regression front as an HLSL, GLSL or C++ "
-                                        "function, on stdout");
-  export_cmd->add_option("result", export_options.result_file, "result file (HDF5) of a symreg job")->required();
-  export_cmd->add_option("--output", export_options.output, "the output (group) whose front to read (default: the "
-                         "only one)");
-  export_cmd->add_option("--format", export_options.format, "hlsl (default), glsl or cpp")
-      ->check(CLI::IsMember({"hlsl", "glsl", "cpp"}));
-  export_cmd->add_option("--member", export_options.member, "row of the front, from 0 (default: the knee)");
-  export_cmd->add_option("--name", export_options.name, "the function's name (default: the output's name)");
-  export_cmd->add_flag("--double", export_options.cpp_double, "C++ only: double instead of float");
+  auto* export_cmd = app.add_subcommand("export", "a table (lut, sweep, ebrdf) as a texture or source file an engine "
+                                        "loads (docs/export.md), or a front member (symreg, brdf_search) as an HLSL, "
+                                        "GLSL or C++ function on stdout");
+  export_cmd->add_option("result", export_options.result_file, "result file (HDF5)")->required();
+  export_cmd->add_option("--format", export_options.format, "a table: dds, ktx2, exr, hdr, png, npy, cpp, glsl, hlsl "
+                         "or js; a front member: hlsl (default), glsl or cpp");
+  export_cmd->add_option("--table", export_options.table, "the table (default: the result's main one: dfg, "
+                         "disney_diffuse, ltc, specular); a wrong name lists those there are");
+  export_cmd->add_option("--model", export_options.model, "a sweep's model (default: the only one)");
+  export_cmd->add_option("-o,--out", export_options.out, "the file to write (default: RESULT.TABLE.EXT beside the result)");
+  export_cmd->add_option("--precision", export_options.precision, "float (default) or half");
+  export_cmd->add_option("--channels", export_options.channels, "channels by name, comma-separated, in R, G, B, A order");
+  export_cmd->add_option("--u-axis", export_options.u_axis, "a 2D table's axis to run along u (x)");
+  export_cmd->add_flag("--flip-v", export_options.flip_v, "write the rows last to first");
+  export_cmd->add_option("--prefix", export_options.prefix, "cpp, glsl, hlsl, js: prefix of every generated symbol");
+  export_cmd->add_option("--output", export_options.output, "front member: the output (group) whose front to read "
+                         "(default: the only one)");
+  export_cmd->add_option("--member", export_options.member, "front member: row of the front, from 0 (default: the knee)");
+  export_cmd->add_option("--name", export_options.name, "front member: the function's name (default: the output's)");
+  export_cmd->add_flag("--double", export_options.cpp_double, "front member, C++ only: double instead of float");
 
   SubmitOptions submit;
   auto* submit_cmd = app.add_subcommand("submit", "submit jobs to Slurm (requeueable, resumed after preemption)");

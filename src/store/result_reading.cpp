@@ -98,7 +98,9 @@ std::string read_text_attribute(const std::string& path, const std::string& obje
   return h5::read_string_attribute(target, name);
 }
 
-std::vector<std::string> read_group_names(const std::string& path, const std::string& group) {
+namespace {
+
+std::vector<std::string> member_names(const std::string& path, const std::string& group, H5I_type_t type) {
   Handle file = h5::open_file(path, false);
   const std::string where = group.empty() ? "/" : group;
   Handle parent(check(H5Gopen2(file, where.c_str(), H5P_DEFAULT), "open group " + where), H5Gclose);
@@ -111,9 +113,19 @@ std::vector<std::string> read_group_names(const std::string& path, const std::st
     std::string name(std::size_t(length), '\0');
     H5Lget_name_by_idx(parent, ".", H5_INDEX_NAME, H5_ITER_INC, i, name.data(), name.size() + 1, H5P_DEFAULT);
     Handle child(check(H5Oopen(parent, name.c_str(), H5P_DEFAULT), "open " + name), H5Oclose);
-    if (H5Iget_type(child) == H5I_GROUP) names.push_back(name);
+    if (H5Iget_type(child) == type) names.push_back(name);
   }
   return names;
+}
+
+}  // namespace
+
+std::vector<std::string> read_group_names(const std::string& path, const std::string& group) {
+  return member_names(path, group, H5I_GROUP);
+}
+
+std::vector<std::string> read_dataset_names(const std::string& path, const std::string& group) {
+  return member_names(path, group, H5I_DATASET);
 }
 
 }  // namespace pbrfit::store

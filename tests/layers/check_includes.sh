@@ -16,6 +16,7 @@ forbidden_for() {
     geometry|integrate|brdf|optimize|ltc|gp|sweep|render|ebrdf) echo "$mpi|$hdf5|$spdlog|$yaml|$cli|$files" ;;
     spec) echo "$mpi|$hdf5|$spdlog|$cli" ;;
     store) echo "$mpi|$spdlog|$yaml|$cli" ;;
+    texture) echo "$mpi|$hdf5|$spdlog|$yaml|$cli|$files|$eigen" ;;  # bytes in memory: OpenEXR, Imath, libpng only
     runtime) echo "$hdf5|$yaml|$cli" ;;
     submit) echo "$mpi|$hdf5|$spdlog|$cli" ;;
     jobs) echo "$mpi|$hdf5|$spdlog|$yaml|$cli" ;;

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # `pbrfit export` refusals, each exit 2 with exactly one line on stderr and nothing on stdout: what is not
-# a readable pbrfit result (the lines of `pbrfit status`), a result of another kind, an unknown output or
+# a readable pbrfit result (the lines of `pbrfit status`), a table result without a format (export_tables.sh
+# has the table refusals), an unknown output or
 # none chosen among several, a member out of range, a front not there yet (a job still running), bad
 # option values. Any other failure (a damaged symreg result, stdout that cannot be written) is exit 3 with
 # one "pbrfit: error:" line. Never a stack trace.
@@ -30,11 +31,13 @@ expect_refusal 2 "fake.h5: error: not a readable HDF5 file (damaged, or not a pb
 export_ other.h5
 expect_refusal 2 "other.h5: error: not a pbrfit result file (no pbrfit_version or job_yaml attribute)"
 
-note "a result of another kind"
+note "a table result: the format is needed, and options of a front member do not apply"
 cp "$PBRFIT_SOURCE_DIR/tests/jobs/small-dfg.yaml" dfg.yaml
 "$PBRFIT" run dfg.yaml -q --output dfg.h5
 export_ dfg.h5
-expect_refusal 2 "dfg.h5: error: not a symbolic-regression or genBRDF result (job kind 'lut'); export reads the fronts of symreg and brdf_search results"
+expect_refusal 2 "--format: error: is needed to export a table: one of dds, ktx2, exr, hdr, png, npy, cpp, glsl, hlsl, js"
+export_ dfg.h5 --format glsl --double
+expect_refusal 2 "--double: error: applies to a front member's function, not to a table"
 
 note "an unknown output, a member out of range, bad option values"
 cp "$PBRFIT_SOURCE_DIR/tests/jobs/small-symreg.yaml" symreg.yaml

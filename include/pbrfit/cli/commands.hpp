@@ -34,11 +34,20 @@ struct ReportOptions {
 
 struct ExportOptions {
   std::string result_file;
+  std::string format;                 // a front member: hlsl (default), glsl or cpp; a table: texture/format.hpp
+  // A front member (symreg, brdf_search) as a function:
   std::string output;                 // empty: the only output
-  std::string format = "hlsl";        // hlsl, glsl or cpp
   std::string member;                 // row of the front, as written; empty: the knee
   std::string name;                   // empty: the output's name
   bool cpp_double = false;
+  // A table (lut, sweep, ebrdf) as a texture or source file (jobs/table_export.hpp):
+  std::string table, model;           // empty: the result's main table, its only model
+  std::string out;                    // the file written; empty: RESULT.<model.>TABLE.<extension> beside it
+  std::string precision = "float";    // float or half
+  std::string channels;               // comma-separated channel names; empty: the table's defaults
+  std::string u_axis;                 // the axis along u; empty: the table's default
+  bool flip_v = false;
+  std::string prefix;                 // source formats: the symbol prefix; empty: from the table's name
 };
 
 int run_command(const RunOptions& options);

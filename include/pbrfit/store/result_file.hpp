@@ -81,6 +81,8 @@ std::string read_text_attribute(const std::string& path, const std::string& obje
 // The names of the groups directly inside a group ("" names the root), in name order; throws RunError when
 // the group is missing.
 std::vector<std::string> read_group_names(const std::string& path, const std::string& group);
+// The names of the datasets directly inside a group, in name order; throws RunError when it is missing.
+std::vector<std::string> read_dataset_names(const std::string& path, const std::string& group);
 
 std::string utc_now_iso8601();
 // This machine's name, as recorded in writer_host.

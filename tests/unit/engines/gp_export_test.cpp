@@ -8,6 +8,7 @@
 #include <sstream>
 #include <string>
 #include <vector>
+#include <unistd.h>
 
 #include "gp_test_support.hpp"
 #include "pbrfit/gp/batch_interpreter.hpp"
@@ -34,7 +35,7 @@ Program every_operator_program() {
 }
 
 struct TempDir {
-  TempDir() : path(fs::temp_directory_path() / ("pbrfit_gp_export_" + std::to_string(std::rand()))) {
+  TempDir() : path(fs::temp_directory_path() / ("pbrfit_gp_export_" + std::to_string(::getpid()))) {
     fs::create_directories(path);
   }
   ~TempDir() { fs::remove_all(path); }

@@ -18,7 +18,8 @@
 // matrix and the two RGBA textures of the reference shaders (ltc_1, ltc_2 with the sphere form-factor ratio
 // where there is a roughness axis, else 0); with polygon_quads > 0 the polygon-lighting errors of
 // ltc/polygon_lighting.hpp (median and 95th percentile over the quads, the number of quads counted) and the
-// published texel's; then the lobe's own extra outputs (a measured material's RGB albedo).
+// published texel's; then the lobe's own extra outputs (a measured material's RGB albedo); last, for a lobe
+// with a published table, the published texel's own ltc_1 and ltc_2.
 //
 // Contract: as SweepProblem. A cell target builds each model's lobe, moments and estimators on first use, and
 // is used by one thread.

@@ -101,6 +101,14 @@ class LtcModelCell {
       const auto extra = spec_.extra_values(target_.lobe(), coordinates_);
       out.insert(out.end(), extra.begin(), extra.end());
     }
+    if (spec_.published) {  // the published texel's own textures, for engines that compare or fall back
+      if (published_) {
+        out.insert(out.end(), published_->ltc1.begin(), published_->ltc1.end());
+        out.insert(out.end(), {published_->norm, published_->fresnel, 0.0, published_->sphere});
+      } else {
+        out.insert(out.end(), 8, nan);
+      }
+    }
     return out;
   }
 
@@ -208,6 +216,12 @@ std::vector<ModelOutput> standard_outputs(const LtcModelSpec& spec, bool polygon
     }
   }
   out.insert(out.end(), spec.extra_outputs.begin(), spec.extra_outputs.end());
+  if (spec.published) {
+    out.push_back({"published_ltc_1", "the published table's ltc_1 texel (NaN off its grid), for comparison", "output",
+                   "", "", 4, store::ValueType::f32});
+    out.push_back({"published_ltc_2", "the published table's ltc_2 texel (NaN off its grid)", "output", "", "", 4,
+                   store::ValueType::f32});
+  }
   return out;
 }
 
