@@ -21,21 +21,6 @@ std::string listed(const std::vector<std::string>& names) {
 
 [[noreturn]] void refuse(const std::string& where, const std::string& message) { throw InputError({where}, message); }
 
-std::vector<std::string> split_axes(const std::string& text) {
-  std::vector<std::string> out;
-  std::size_t start = 0;
-  while (start <= text.size()) {
-    const std::size_t comma = text.find(',', start);
-    std::string item = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
-    item.erase(0, item.find_first_not_of(' '));
-    item.erase(item.find_last_not_of(' ') + 1);
-    if (!item.empty()) out.push_back(item);
-    if (comma == std::string::npos) break;
-    start = comma + 1;
-  }
-  return out;
-}
-
 std::string number(double v) {
   char text[32];
   std::snprintf(text, sizeof text, "%.17g", v);
@@ -53,7 +38,7 @@ Table read(const std::string& path, const std::string& dataset) {
   Table t;
   t.values = store::read_table(path, dataset, &t.dims);
   try {
-    t.axes = split_axes(store::read_text_attribute(path, dataset, "axes"));
+    t.axes = store::read_name_list_attribute(path, dataset, "axes");
   } catch (const RunError&) {
   }
   if (t.axes.size() != t.dims.size()) {

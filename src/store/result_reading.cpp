@@ -98,6 +98,22 @@ std::string read_text_attribute(const std::string& path, const std::string& obje
   return h5::read_string_attribute(target, name);
 }
 
+std::vector<std::string> read_name_list_attribute(const std::string& path, const std::string& object,
+                                                  const std::string& name) {
+  const std::string text = read_text_attribute(path, object, name);
+  std::vector<std::string> names;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t comma = text.find(',', start);
+    const std::string item = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    const auto first = item.find_first_not_of(' '), last = item.find_last_not_of(' ');
+    if (first != std::string::npos) names.push_back(item.substr(first, last - first + 1));
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  return names;
+}
+
 namespace {
 
 std::vector<std::string> member_names(const std::string& path, const std::string& group, H5I_type_t type) {

@@ -78,6 +78,10 @@ std::vector<double> read_table(const std::string& path, const std::string& datas
 std::vector<std::string> read_text_table(const std::string& path, const std::string& dataset);
 // A string attribute of a group or dataset ("" names the root); throws RunError when it is missing.
 std::string read_text_attribute(const std::string& path, const std::string& object, const std::string& name);
+// A string attribute holding a comma-separated list of names ("axes", "inputs": "x, y"), split, with the
+// spaces around each name trimmed and empty names dropped; throws RunError when it is missing.
+std::vector<std::string> read_name_list_attribute(const std::string& path, const std::string& object,
+                                                  const std::string& name);
 // The names of the groups directly inside a group ("" names the root), in name order; throws RunError when
 // the group is missing.
 std::vector<std::string> read_group_names(const std::string& path, const std::string& group);

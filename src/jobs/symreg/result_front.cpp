@@ -17,7 +17,7 @@ std::vector<std::string> result_outputs(const std::string& path) {
 }
 
 OutputFront read_output_front(const std::string& path, const std::string& output) {
-  OutputFront front{output, split_names(store::read_text_attribute(path, output, "inputs")), {}};
+  OutputFront front{output, store::read_name_list_attribute(path, output, "inputs"), {}};
   const std::string table = output + "/front";
   const auto expressions = store::read_text_field(path, table, "expression");
   const auto costs = store::read_number_field(path, table, "cost");

@@ -8,20 +8,6 @@
 
 namespace pbrfit::jobs::symreg {
 
-std::vector<std::string> split_names(const std::string& text) {
-  std::vector<std::string> names;
-  std::size_t start = 0;
-  while (start <= text.size()) {
-    const std::size_t comma = text.find(',', start);
-    std::string name = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
-    const auto first = name.find_first_not_of(' '), last = name.find_last_not_of(' ');
-    if (first != std::string::npos) names.push_back(name.substr(first, last - first + 1));
-    if (comma == std::string::npos) break;
-    start = comma + 1;
-  }
-  return names;
-}
-
 SymregOutput output_from_columns(const std::string& name, const std::vector<std::string>& inputs,
                                  const std::vector<std::vector<double>>& input_columns, const std::vector<double>& target) {
   std::vector<std::size_t> rows;
@@ -46,7 +32,7 @@ SymregOutput output_from_result_table(const std::string& path, const std::string
   const std::string group = table.substr(0, slash);
   std::vector<std::uint64_t> dims;
   const std::vector<double> values = store::read_table(path, table, &dims);
-  const auto axes = split_names(store::read_text_attribute(path, table, "axes"));
+  const auto axes = store::read_name_list_attribute(path, table, "axes");
   if (axes.size() != dims.size()) throw RunError("it is not a table over its group's axes");
   std::vector<std::vector<double>> axis_values;
   for (std::size_t d = 0; d < axes.size(); ++d) {

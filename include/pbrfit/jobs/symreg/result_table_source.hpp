@@ -8,10 +8,6 @@
 
 namespace pbrfit::jobs::symreg {
 
-// The names of a comma-separated list as result attributes hold them ("x, y"): spaces around each name
-// trimmed, empty names dropped.
-std::vector<std::string> split_names(const std::string& text);
-
 // The rows of the columns where every value is finite (columns and target of equal length).
 SymregOutput output_from_columns(const std::string& name, const std::vector<std::string>& inputs,
                                  const std::vector<std::vector<double>>& input_columns, const std::vector<double>& target);
