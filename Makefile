@@ -51,6 +51,8 @@ soak: build
 # The npm packages of the browser and node tests (tests/web/package.json): three.js, playwright-core, ktx-parse.
 web-deps:
 	.ci/install-deps --web
+	@node -e 'process.exit(+process.versions.node.split(".")[0] >= 20 ? 0 : 1)' || \
+	  { echo "pbrfit: the web tests need Node.js 20 or later (playwright-core); this is $$(node --version)"; exit 1; }
 	mkdir -p $(BUILD)/web && cp tests/web/package.json tests/web/package-lock.json $(BUILD)/web/
 	cd $(BUILD)/web && { [ -d node_modules ] && npm ls --silent >/dev/null 2>&1 || npm ci --no-audit --no-fund --loglevel=error; }
 
