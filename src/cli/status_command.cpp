@@ -33,7 +33,7 @@ bool writer_is_gone(const store::ResultSummary& s) {
 }
 
 std::string state_of(const store::ResultSummary& s, const std::string& path) {
-  if (s.state != "running" || !writer_is_gone(s)) return s.state;
+  if (s.state != store::RunStatus::running || !writer_is_gone(s)) return store::run_status_name(s.state);
   const bool resumable = access(store::checkpoint_path_for(path).c_str(), R_OK) == 0;
   return resumable ? "interrupted (the job stopped without saying so; its checkpoint can be resumed)"
                    : "interrupted (the job stopped without saying so and left no checkpoint)";

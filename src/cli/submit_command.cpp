@@ -6,6 +6,7 @@
 #include "exit_on_error.hpp"
 #include "pbrfit/cli/commands.hpp"
 #include "pbrfit/core/error.hpp"
+#include "pbrfit/store/share_directory.hpp"
 #include "pbrfit/jobs/job_kinds.hpp"
 #include "pbrfit/spec/job_spec.hpp"
 #include "pbrfit/store/atomic_file.hpp"
@@ -54,9 +55,10 @@ void submit_one(const std::string& job_file, const SubmitOptions& options, const
 
 int submit_command(const SubmitOptions& options) {
   int worst = exit_success;
-  const std::string template_path = options.template_file.empty() ? PBRFIT_SBATCH_TEMPLATE : options.template_file;
   for (const auto& job_file : options.job_files) {
     const int code = exit_on_error([&] {
+      const std::string template_path =
+          options.template_file.empty() ? store::share_directory() + "/sbatch.template" : options.template_file;
       submit_one(job_file, options, template_path, read_text(template_path));
       return int(exit_success);
     });

@@ -389,8 +389,8 @@ std::vector<std::string> exportable_tables(const std::string& path, const store:
 }
 
 texture::Texture table_texture(const std::string& path, const store::ResultSummary& s, const TableRequest& request) {
-  if (s.state != "complete")
-    refuse(path, "is " + quote(s.state) + ", not complete: export its tables once the job has finished");
+  if (s.state != store::RunStatus::complete)
+    refuse(path, "is " + quote(store::run_status_name(s.state)) + ", not complete: export its tables once the job has finished");
   if (s.job_kind == "lut") return lut_texture(path, s, request);
   if (s.job_kind == "sweep") return sweep_texture(path, s, request);
   if (s.job_kind == "ebrdf") return ebrdf_texture(path, s, request);

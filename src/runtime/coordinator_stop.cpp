@@ -20,7 +20,7 @@ void Coordinator::save_before_stopping() {
   if (state_.finished()) return;
   try {
     if (state_.has_news()) persistence_.save_checkpoint(elapsed());
-    persistence_.write_and_publish(failure_ ? "failed" : "interrupted", elapsed());
+    persistence_.write_and_publish(failure_ ? store::RunStatus::failed : store::RunStatus::interrupted, elapsed());
   } catch (const std::exception& e) {
     spdlog::error("cannot save the checkpoint: {}", e.what());
   }
@@ -68,7 +68,7 @@ void Coordinator::finish(Outcome outcome) {
     return;
   }
   if (state_.has_news()) persistence_.save_checkpoint(elapsed());
-  persistence_.write_and_publish(outcome == Outcome::failed ? "failed" : "interrupted", elapsed());
+  persistence_.write_and_publish(outcome == Outcome::failed ? store::RunStatus::failed : store::RunStatus::interrupted, elapsed());
 }
 
 bool Coordinator::say_farewell(int code) {

@@ -71,7 +71,7 @@ ExistingOutput inspect_existing_output(const RunSettings& s) {
   if (result && result->job_yaml != s.job_text)
     spdlog::warn("--force: overwriting the result of a different job text: {}", s.output);
   const bool same_job = result && result->job_yaml == s.job_text;
-  found.complete = s.resume && !checkpoint && same_job && result->state == "complete";
+  found.complete = s.resume && !checkpoint && same_job && result->state == store::RunStatus::complete;
   found.discards_checkpoint = checkpoint && !s.resume;
   if (s.resume) found.checkpoint = std::move(checkpoint);
   return found;

@@ -62,7 +62,7 @@ void resume_from(Preparation& p, store::CheckpointReading checkpoint, const MpiS
   p.elapsed_before = checkpoint.state.elapsed_seconds;
   p.state = std::make_unique<RunState>(workload, *p.codec, std::move(checkpoint.state));
   p.file = create_result_file(mpi, workload, s);
-  store::Progress progress{"running", p.state->items_done(), workload.total_items(), p.elapsed_before,
+  store::Progress progress{store::RunStatus::running, p.state->items_done(), workload.total_items(), p.elapsed_before,
                            workload.headline(p.state->summary()), ""};
   rebuild_result_file(*p.file, journal, s.job_text, *p.codec, journal_length, progress);
   p.checkpointer = Checkpointer::resume(s.output, s.job_text, journal_length, checkpoint.valid_length);

@@ -29,14 +29,14 @@ Persistence::Persistence(const RunSettings& settings, const Workload& workload, 
       items_total_(workload.total_items()),
       pacing_(settings.flush_interval_seconds) {}
 
-store::Progress Persistence::progress(const std::string& state, double elapsed) const {
+store::Progress Persistence::progress(store::RunStatus state, double elapsed) const {
   store::Progress p;
   p.state = state;
   p.items_done = state_.items_done();
   p.items_total = items_total_;
   p.elapsed_seconds = elapsed;
   p.headline = workload_.headline(state_.summary());
-  if (state != "running") p.finished_utc = store::utc_now_iso8601();
+  if (state != store::RunStatus::running) p.finished_utc = store::utc_now_iso8601();
   return p;
 }
 
@@ -48,7 +48,7 @@ void Persistence::tick(double elapsed) {
   const bool checkpoint_by_memory = state_.unjournaled().bytes().size() >= max_unjournaled_bytes;
   if ((checkpoint_by_time || checkpoint_by_items || checkpoint_by_memory) && state_.has_news()) save_checkpoint(elapsed);
   if (seconds_since(last_write_) >= settings_.flush_interval_seconds || state_.unflushed_blocks() >= max_unwritten_blocks)
-    write("running", elapsed);
+    write(store::RunStatus::running, elapsed);
   if (unpublished_ && seconds_since(last_publish_) >= pacing_.wait_seconds()) publish();
 }
 
@@ -62,7 +62,7 @@ void Persistence::save_checkpoint(double elapsed) {
                 checkpointer_.checkpoint_bytes(), checkpointer_.journal_bytes());
 }
 
-void Persistence::write(const std::string& state, double elapsed) {
+void Persistence::write(store::RunStatus state, double elapsed) {
   file_.write(state_.take_unflushed(), progress(state, elapsed));
   last_write_ = Clock::now();
   unpublished_ = true;
@@ -76,13 +76,13 @@ void Persistence::publish() {
   unpublished_ = false;
 }
 
-void Persistence::write_and_publish(const std::string& state, double elapsed) {
+void Persistence::write_and_publish(store::RunStatus state, double elapsed) {
   write(state, elapsed);
   publish();
 }
 
 void Persistence::complete(double elapsed) {
-  write("complete", elapsed);
+  write(store::RunStatus::complete, elapsed);
   file_.complete();
   checkpointer_.remove_files();
 }

@@ -26,14 +26,14 @@ class Persistence {
   void tick(double elapsed);
   void save_checkpoint(double elapsed);
   // Writes the result file with the given state and publishes it.
-  void write_and_publish(const std::string& state, double elapsed);
+  void write_and_publish(store::RunStatus state, double elapsed);
   // The job is complete: last write, the result file renamed into place, checkpoint and journal removed.
   void complete(double elapsed);
-  store::Progress progress(const std::string& state, double elapsed) const;
+  store::Progress progress(store::RunStatus state, double elapsed) const;
 
  private:
   using Clock = std::chrono::steady_clock;
-  void write(const std::string& state, double elapsed);
+  void write(store::RunStatus state, double elapsed);
   void publish();
 
   const RunSettings& settings_;

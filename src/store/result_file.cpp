@@ -27,6 +27,22 @@ std::string utc_now_iso8601() {
   return buffer;
 }
 
+const char* run_status_name(RunStatus status) {
+  switch (status) {
+    case RunStatus::running: return "running";
+    case RunStatus::complete: return "complete";
+    case RunStatus::interrupted: return "interrupted";
+    case RunStatus::failed: return "failed";
+  }
+  return "running";
+}
+
+RunStatus parse_run_status(const std::string& path, const std::string& text) {
+  for (RunStatus s : {RunStatus::running, RunStatus::complete, RunStatus::interrupted, RunStatus::failed})
+    if (text == run_status_name(s)) return s;
+  throw InputError({path}, "state attribute '" + text + "' is none of running, complete, interrupted, failed");
+}
+
 std::string host_name() {
   char buffer[256] = {};
   gethostname(buffer, sizeof buffer - 1);
@@ -36,7 +52,7 @@ std::string host_name() {
 namespace {
 
 void write_progress(hid_t file, const Progress& progress) {
-  h5::write_string_attribute(file, "state", progress.state);
+  h5::write_string_attribute(file, "state", run_status_name(progress.state));
   h5::write_u64_attribute(file, "items_done", progress.items_done);
   h5::write_u64_attribute(file, "items_total", progress.items_total);
   h5::write_f64_attribute(file, "elapsed_seconds", progress.elapsed_seconds);

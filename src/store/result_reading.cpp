@@ -14,13 +14,13 @@ using h5::Handle;
 
 namespace {
 
-ResultSummary read_summary_attributes(hid_t file) {
+ResultSummary read_summary_attributes(const std::string& path, hid_t file) {
   ResultSummary s;
   s.pbrfit_version = h5::read_string_attribute(file, "pbrfit_version");
   s.job_name = h5::read_string_attribute(file, "job_name");
   s.job_kind = h5::read_string_attribute(file, "job_kind");
   s.job_yaml = h5::read_string_attribute(file, "job_yaml");
-  s.state = h5::read_string_attribute(file, "state");
+  s.state = parse_run_status(path, h5::read_string_attribute(file, "state"));
   s.started_utc = h5::read_string_attribute(file, "started_utc");
   s.finished_utc = h5::read_string_attribute(file, "finished_utc");
   s.headline = h5::read_string_attribute(file, "headline");
@@ -59,7 +59,7 @@ ResultSummary read_result_summary(const std::string& path) {
   if (!h5::has_attribute(file, "pbrfit_version") || !h5::has_attribute(file, "job_yaml"))
     throw InputError({path}, "not a pbrfit result file (no pbrfit_version or job_yaml attribute)");
   try {
-    return read_summary_attributes(file);
+    return read_summary_attributes(path, file);
   } catch (const RunError& e) {
     throw InputError({path}, std::string("incomplete pbrfit result file: ") + e.what());
   }

@@ -68,7 +68,7 @@ int main(int argc, char** argv) {
   start = Clock::now();
   const auto names = material_set("metals")->training;
   std::vector<brdf::MerlTable> materials;
-  for (const auto& name : names) materials.push_back(load_material(name, MaterialSource{"", PBRFIT_STANDIN_DIR, "results/merl-cache"}));
+  for (const auto& name : names) materials.push_back(load_material(name, MaterialSource{"", "", "results/merl-cache"}));
   const MetricData data(table, materials, names);
   std::printf("4 training metals loaded and their datasets built: %.2f s (%zu rows for steel, red)\n", seconds_since(start),
               data.channel(0, 0).data.rows());

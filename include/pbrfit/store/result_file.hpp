@@ -17,6 +17,12 @@
 
 namespace pbrfit::store {
 
+// Where a job stands, as the result file's `state` attribute says it (the names are what is written).
+enum class RunStatus { running, complete, interrupted, failed };
+const char* run_status_name(RunStatus status);
+// Reads a `state` attribute back; throws InputError naming `path` for any other text.
+RunStatus parse_run_status(const std::string& path, const std::string& text);
+
 struct RunInfo {
   std::string job_name;
   std::string job_kind;
@@ -29,7 +35,7 @@ struct RunInfo {
 };
 
 struct Progress {
-  std::string state = "running";
+  RunStatus state = RunStatus::running;
   std::uint64_t items_done = 0;
   std::uint64_t items_total = 0;
   double elapsed_seconds = 0.0;
@@ -63,7 +69,8 @@ class ResultFile {
 
 // What `status` and the overwrite check read back; throws InputError if the file is not a pbrfit result.
 struct ResultSummary {
-  std::string pbrfit_version, job_name, job_kind, job_yaml, state, started_utc, finished_utc;
+  std::string pbrfit_version, job_name, job_kind, job_yaml, started_utc, finished_utc;
+  RunStatus state = RunStatus::running;
   std::string headline, updated_utc, writer_host, scheduler_job;
   std::uint64_t seed = 0, items_done = 0, items_total = 0;
   std::int64_t ranks = 0, threads = 0, writer_pid = 0;

@@ -138,7 +138,7 @@ BrdfSearchSettings brdf_search_settings(const spec::Section& s) {
   b.evolution = {std::size_t(s.get_int("tournament_size")), std::size_t(s.get_int("max_genome"))};
   check_island_model(s, b);
   b.fit = fit_of(s.get_section("fit"));
-  const MaterialSource source{s.get_string("merl_directory"), PBRFIT_STANDIN_DIR, s.get_string("cache")};
+  const MaterialSource source{s.get_string("merl_directory"), "", s.get_string("cache")};
   b.evaluation = evaluation_of(s, source);
   b.scene = build_scene(s.get_section("scene"), s.get_section("scene"));
   if (b.evaluation.enabled) b.evaluation.scene = build_scene(s.get_section("scene"), s.get_section("evaluate"));

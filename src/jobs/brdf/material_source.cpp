@@ -6,6 +6,7 @@
 
 #include "pbrfit/brdf/neural_brdf.hpp"
 #include "pbrfit/core/error.hpp"
+#include "pbrfit/store/share_directory.hpp"
 #include "pbrfit/store/merl_file.hpp"
 #include "pbrfit/store/result_file.hpp"
 
@@ -50,10 +51,14 @@ void write_cache(const std::string& path, const std::vector<double>& stored) {
   }
 }
 
+std::string standin_directory(const MaterialSource& source) {
+  return source.standins.empty() ? store::data_directory() + "/merl_nbrdf" : source.standins;
+}
+
 }  // namespace
 
 std::string material_path(const std::string& name, const MaterialSource& source) {
-  return source.merl_directory.empty() ? source.standins + "/" + name + ".h5" : source.merl_directory + "/" + name + ".binary";
+  return source.merl_directory.empty() ? standin_directory(source) + "/" + name + ".h5" : source.merl_directory + "/" + name + ".binary";
 }
 
 pbrfit::brdf::MerlTable load_material(const std::string& name, const MaterialSource& source) {
@@ -61,7 +66,7 @@ pbrfit::brdf::MerlTable load_material(const std::string& name, const MaterialSou
   const std::string cached = source.cache_directory.empty() ? "" : source.cache_directory + "/" + name + ".binary";
   if (!cached.empty() && access(cached.c_str(), R_OK) == 0) return from_file(cached);
   // Through the stored form either way, so a cached and an uncached run see the very same numbers.
-  const auto stored = pbrfit::brdf::stored_from_merl_table(stand_in(source.standins + "/" + name + ".h5"));
+  const auto stored = pbrfit::brdf::stored_from_merl_table(stand_in(standin_directory(source) + "/" + name + ".h5"));
   if (!cached.empty()) write_cache(cached, stored);
   return pbrfit::brdf::merl_table_from_stored(stored);
 }

@@ -57,8 +57,8 @@ PrefilteredTables read_tables(const std::string& path) {
   const store::ResultSummary summary = store::read_result_summary(path);
   if (summary.job_kind != "ebrdf")
     throw InputError({path}, "is a result of kind '" + summary.job_kind + "', not of an ebrdf job");
-  if (summary.state != "complete")
-    throw InputError({path}, "is " + summary.state + ", not complete: finish (or --resume) its job first");
+  if (summary.state != store::RunStatus::complete)
+    throw InputError({path}, "is " + std::string(store::run_status_name(summary.state)) + ", not complete: finish (or --resume) its job first");
   PrefilteredTables tables;
   tables.map = read_normals(path);
   tables.specular = read_component(path, "specular");

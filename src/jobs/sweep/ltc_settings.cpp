@@ -12,6 +12,7 @@
 #include "pbrfit/brdf/merl_table.hpp"
 #include "pbrfit/brdf/tabulated_lobe.hpp"
 #include "pbrfit/core/error.hpp"
+#include "pbrfit/store/share_directory.hpp"
 #include "pbrfit/gp/tree_walker.hpp"
 #include "pbrfit/jobs/brdf/material_sets.hpp"
 #include "pbrfit/jobs/brdf/material_source.hpp"
@@ -29,8 +30,8 @@ constexpr const char* roughness_axis = "roughness";
 
 // The published table the GGX anchors compare with; null when the data file is not there.
 std::shared_ptr<const ltc::PublishedLtcTable> published_ltc_table() {
-  const std::string path = std::string(PBRFIT_DATA_DIR) + "/reference/ltc_ggx_heitz2016_64.csv";
-  static const std::shared_ptr<const ltc::PublishedLtcTable> table = [&]() -> std::shared_ptr<const ltc::PublishedLtcTable> {
+  static const std::shared_ptr<const ltc::PublishedLtcTable> table = []() -> std::shared_ptr<const ltc::PublishedLtcTable> {
+    const std::string path = store::data_directory() + "/reference/ltc_ggx_heitz2016_64.csv";
     try {
       const Bytes bytes = store::read_whole_file(path, 4u << 20);
       const std::string_view text(reinterpret_cast<const char*>(bytes.data()), bytes.size());

@@ -45,7 +45,7 @@ std::size_t chosen_member(const std::string& path, const store::ResultSummary& s
   const std::size_t count = front.members.size();
   if (count == 0)
     throw InputError({path}, "no front of " + quote(front.output) + " yet: the job has not finished its last stage (" +
-                                 summary.state + ", " + std::to_string(summary.items_done) + " of " +
+                                 store::run_status_name(summary.state) + ", " + std::to_string(summary.items_done) + " of " +
                                  std::to_string(summary.items_total) + " work items done)");
   if (!wanted) return knee_member(path, front);
   if (*wanted >= count)

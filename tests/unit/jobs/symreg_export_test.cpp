@@ -75,7 +75,7 @@ std::string symreg_result(const char* name, bool finished) {
   info.job_yaml = job_text;
   store::ResultFile file(path, w.layout(), info);
   store::Progress progress;
-  progress.state = finished ? "complete" : "running";
+  progress.state = finished ? store::RunStatus::complete : store::RunStatus::running;
   file.write(finished ? final_blocks : std::vector<store::Block>{}, progress);
   file.publish();
   return path;

@@ -79,5 +79,5 @@ TEST_CASE("the untouched checkpoint of an interrupted run still resumes") {
   auto resumed = small_chain();
   resumed.resume = true;
   REQUIRE(run_chain(resumed, path) == exit_success);
-  CHECK(store::read_result_summary(path).state == "complete");
+  CHECK(store::read_result_summary(path).state == store::RunStatus::complete);
 }

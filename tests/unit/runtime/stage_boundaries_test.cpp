@@ -47,7 +47,7 @@ TEST_CASE("each stage starts from every result of the stage before, whatever the
     CHECK(table(other, "chain/value") == table(reference, "chain/value"));
     CHECK(table(other, "chain/random") == table(reference, "chain/random"));
   }
-  CHECK(store::read_result_summary(reference).state == "complete");
+  CHECK(store::read_result_summary(reference).state == store::RunStatus::complete);
   CHECK_FALSE(std::filesystem::exists(store::checkpoint_path_for(reference)));
   CHECK_FALSE(std::filesystem::exists(store::journal_path_for(reference)));
 }
@@ -72,7 +72,7 @@ TEST_CASE("a stop at every stage boundary and in the middle of every stage resum
         stopped.chain.signal_stage = stage;
         stopped.chain.signal_after = after;
         REQUIRE(run_chain(stopped, path) == exit_interrupted);
-        CHECK(store::read_result_summary(path).state == "interrupted");
+        CHECK(store::read_result_summary(path).state == store::RunStatus::interrupted);
         auto resumed = uneven(1);
         resumed.resume = true;
         REQUIRE(run_chain(resumed, path) == exit_success);
@@ -137,6 +137,6 @@ TEST_CASE("a failing item fails the job, naming it, and leaves a checkpoint") {
   run.chain.fail_stage = 1;
   run.chain.fail_item = 7;
   REQUIRE(run_chain(run, path) == exit_run_failure);
-  CHECK(store::read_result_summary(path).state == "failed");
+  CHECK(store::read_result_summary(path).state == store::RunStatus::failed);
   CHECK(std::filesystem::exists(store::checkpoint_path_for(path)));
 }

@@ -28,7 +28,7 @@ store::RunInfo info() {
   return {"test-job", "lut", "name: test-job\n", 5, 2, 3, "2026-01-01T00:00:00Z", "slurm job 7, restart 1"};
 }
 
-store::Progress progress(std::uint64_t done, const std::string& state = "running") {
+store::Progress progress(std::uint64_t done, store::RunStatus state = store::RunStatus::running) {
   store::Progress p;
   p.state = state;
   p.items_done = done;
@@ -77,16 +77,16 @@ TEST_CASE("blocks land at their offsets; rows not yet written read as NaN; progr
   CHECK(s.seed == 5);
   CHECK(s.ranks == 2);
   CHECK(s.threads == 3);
-  CHECK(s.state == "running");
+  CHECK(s.state == store::RunStatus::running);
   CHECK(s.items_done == 1);
   CHECK(s.items_total == 3);
   CHECK(s.headline == "one row");
   CHECK(s.scheduler_job == "slurm job 7, restart 1");
 
-  file.write({{"grid", "value", {0, 0}, {2, 2}, {1, 2, 3, 4}, {}}}, progress(3, "complete"));
+  file.write({{"grid", "value", {0, 0}, {2, 2}, {1, 2, 3, 4}, {}}}, progress(3, store::RunStatus::complete));
   file.publish();
   CHECK(store::read_table(path, "grid/value") == std::vector<double>{1, 2, 3, 4, 5, 6});
-  CHECK(store::read_result_summary(path).state == "complete");
+  CHECK(store::read_result_summary(path).state == store::RunStatus::complete);
   CHECK(store::read_table(path, "grid/row") == std::vector<double>{0.0, 0.5, 1.0});
 }
 
@@ -184,4 +184,12 @@ TEST_CASE("a file that is not a pbrfit result is an input error") {
   REQUIRE_THROWS_WITH(store::read_result_summary(path),
                       Catch::Matchers::StartsWith(path + ": error: not a readable HDF5 file"));
   REQUIRE_THROWS_AS(store::read_result_summary(temporary_path("absent.h5")), InputError);
+}
+
+TEST_CASE("the run state is one of four names; any other text in a result file is refused naming the file") {
+  for (auto s : {store::RunStatus::running, store::RunStatus::complete, store::RunStatus::interrupted,
+                 store::RunStatus::failed})
+    CHECK(store::parse_run_status("R.h5", store::run_status_name(s)) == s);
+  CHECK_THROWS_WITH(store::parse_run_status("R.h5", "Complete"),
+                    Catch::Matchers::ContainsSubstring("R.h5") && Catch::Matchers::ContainsSubstring("'Complete'"));
 }

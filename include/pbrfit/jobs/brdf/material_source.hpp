@@ -1,6 +1,6 @@
 #pragma once
 // Where a measured material comes from, by MERL name: `<merl_directory>/<name>.binary` when a directory of
-// real MERL files is given, else the neural stand-in `<standins>/<name>.h5` (data/merl_nbrdf) evaluated on
+// real MERL files is given, else the neural stand-in `<standins>/<name>.h5` (default: merl_nbrdf in the data directory) evaluated on
 // the MERL grid, optionally cached as `<cache_directory>/<name>.binary` (a later job reads the cache).
 //
 // Contract: load_material returns a table of the MERL grid or throws InputError naming the file (missing,
@@ -15,7 +15,7 @@ namespace pbrfit::jobs::brdf {
 
 struct MaterialSource {
   std::string merl_directory;   // empty: use the stand-ins
-  std::string standins = PBRFIT_STANDIN_DIR;
+  std::string standins;          // empty: data_directory() + "/merl_nbrdf"
   std::string cache_directory;  // empty: no cache
 };
 
