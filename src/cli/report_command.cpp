@@ -1,19 +1,20 @@
 // `pbrfit report RESULT.h5 [--out DIR]`: checks here that RESULT is a readable pbrfit result (the same
-// one-line refusals as `status`, exit 2), then runs the report package (report/ in the share directory, store/share_directory.hpp, or
-// $PBRFIT_REPORT_DIR) with /usr/bin/python3 (or $PBRFIT_PYTHON), isolated from the user's Python
-// settings, and returns its exit code: 0, 2 or 3 with its own one-line message. An interpreter that is
-// missing, a package that is not there, or a script that ends any other way is exit 3, one line.
+// one-line refusals as `status`, exit 2), then runs the report package ($PBRFIT_REPORT_DIR, else report/ in
+// the share directory of store/share_directory.hpp) with /usr/bin/python3 (or $PBRFIT_PYTHON), isolated
+// from the user's Python settings, and returns its exit code: 0, 2 or 3 with its own one-line message. An
+// interpreter that is missing, a package that is not there, or a script that ends any other way is exit 3,
+// one line.
 #include <unistd.h>
 
 #include <cstdlib>
 
 #include "child_process.hpp"
-#include "pbrfit/store/share_directory.hpp"
 #include "exit_on_error.hpp"
 #include "summary_reading.hpp"
 #include "pbrfit/cli/commands.hpp"
 #include "pbrfit/core/error.hpp"
 #include "pbrfit/core/quoted_text.hpp"
+#include "pbrfit/store/share_directory.hpp"
 
 namespace pbrfit::cli {
 
@@ -27,8 +28,8 @@ std::string setting(const char* variable, const char* fallback) {
 }
 
 std::string report_package() {
-  const char* set = std::getenv("PBRFIT_REPORT_DIR");
-  const std::string directory = set && *set ? std::string(set) : store::share_directory() + "/report";
+  std::string directory = setting("PBRFIT_REPORT_DIR", "");
+  if (directory.empty()) directory = store::share_directory() + "/report";
   if (access((directory + "/__main__.py").c_str(), R_OK) != 0)
     throw RunError("the report package is missing: no " + quote(directory + "/__main__.py"));
   return directory;

@@ -27,7 +27,7 @@ std::string utc_now_iso8601() {
   return buffer;
 }
 
-const char* run_status_name(RunStatus status) {
+std::string run_status_name(RunStatus status) {
   switch (status) {
     case RunStatus::running: return "running";
     case RunStatus::complete: return "complete";

@@ -19,7 +19,7 @@ namespace pbrfit::store {
 
 // Where a job stands, as the result file's `state` attribute says it (the names are what is written).
 enum class RunStatus { running, complete, interrupted, failed };
-const char* run_status_name(RunStatus status);
+std::string run_status_name(RunStatus status);
 // Reads a `state` attribute back; throws InputError naming `path` for any other text.
 RunStatus parse_run_status(const std::string& path, const std::string& text);
 

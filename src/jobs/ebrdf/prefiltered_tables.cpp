@@ -58,7 +58,7 @@ PrefilteredTables read_tables(const std::string& path) {
   if (summary.job_kind != "ebrdf")
     throw InputError({path}, "is a result of kind '" + summary.job_kind + "', not of an ebrdf job");
   if (summary.state != store::RunStatus::complete)
-    throw InputError({path}, "is " + std::string(store::run_status_name(summary.state)) + ", not complete: finish (or --resume) its job first");
+    throw InputError({path}, "is " + store::run_status_name(summary.state) + ", not complete: finish (or --resume) its job first");
   PrefilteredTables tables;
   tables.map = read_normals(path);
   tables.specular = read_component(path, "specular");

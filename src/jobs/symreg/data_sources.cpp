@@ -50,7 +50,7 @@ SymregData from_result(const spec::Section& s) {
   const std::string& path = s.get_string("result");
   const auto summary = read_at_key(s, "result", path, [&] { return store::read_result_summary(path); });
   if (summary.state != store::RunStatus::complete)
-    s.reject("result", "names " + path + ", whose job is " + std::string(store::run_status_name(summary.state)) + ", not complete");
+    s.reject("result", "names " + path + ", whose job is " + store::run_status_name(summary.state) + ", not complete");
   if (!s.given("tables")) s.reject("result", "needs 'tables': the tables to regress, e.g. [dfg/scale]");
   SymregData data{{}, "pbrfit result " + path + " (job " + summary.job_name + ")"};
   for (const auto& table : s.get_string_list("tables")) {

@@ -1,7 +1,8 @@
 #pragma once
 // Where a measured material comes from, by MERL name: `<merl_directory>/<name>.binary` when a directory of
-// real MERL files is given, else the neural stand-in `<standins>/<name>.h5` (default: merl_nbrdf in the data directory) evaluated on
-// the MERL grid, optionally cached as `<cache_directory>/<name>.binary` (a later job reads the cache).
+// real MERL files is given, else the neural stand-in `<standins>/<name>.h5` (default: merl_nbrdf in the
+// data directory, store/share_directory.hpp) evaluated on the MERL grid, optionally cached as
+// `<cache_directory>/<name>.binary` (a later job reads the cache).
 //
 // Contract: load_material returns a table of the MERL grid or throws InputError naming the file (missing,
 // malformed, another size). A cache that cannot be written is skipped (it only saves time); concurrent
