@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <vector>
 
 #include "pbrfit/gp/expression_printer.hpp"
 #include "pbrfit/jobs/brdf/brdf_inputs.hpp"
@@ -19,77 +20,80 @@ const char* member_name(EvaluatedMember member) {
   return "?";
 }
 
-BrdfSearchWorkload::BrdfSearchWorkload(BrdfSearchSettings settings) : settings_(std::move(settings)) {}
-
-BrdfSearchWorkload::Role BrdfSearchWorkload::role(WorkItemId id) const {
-  if (id.stage == front_stage()) return Role::front;
-  if (id.stage == front_stage() + 1) return Role::material;
-  if (id.stage == front_stage() + 2) return Role::averages;
-  if (id.stage % 2 == 1) return Role::evaluation;
-  return id.item == settings_.islands ? Role::front : Role::breeding;
+BrdfSearchWorkload::BrdfSearchWorkload(BrdfSearchSettings settings) : settings_(std::move(settings)) {
+  using runtime::stage;
+  using runtime::parts;
+  using Self = BrdfSearchWorkload;
+  using Trees = std::vector<gp::SyntaxTree>;
+  using Materials = std::vector<MaterialEvaluation>;
+  const auto breed = stage<Nothing, BreedInput, BreedRecord>("breed", 1, this)
+                         .items(&Self::island_count)
+                         .input(&Self::breeding_input)
+                         .compute(&Self::breed)
+                         .check(&Self::check_breed)
+                         .blocks(&Self::breed_blocks)
+                         .kept_through(&Self::kept_for_next_generation);
+  const auto front = stage<Nothing, FrontInput, FrontRecord>("front", 1, this)
+                         .items(&Self::one)
+                         .input(&Self::front_input)
+                         .compute(&Self::keep_front)
+                         .blocks(&Self::front_blocks)
+                         .kept_through(&Self::kept_for_next_generation);
+  const auto evaluate = stage<EvaluationContext, Nothing, EvaluationRecord>("evaluate", 1, this)
+                            .items(&Self::chunk_count)
+                            .context(&Self::evaluation_context)
+                            .compute(&Self::evaluate)
+                            .check(&Self::check_evaluation)
+                            .blocks(&Self::no_blocks)
+                            .kept_through(&Self::kept_for_next_generation)
+                            .fold(&Self::fold_evaluation);
+  add_cycle(std::uint32_t(settings_.generations), {parts(breed, front), parts(evaluate)});
+  add_stage(stage<Nothing, FrontInput, FrontRecord>("last front", 1, this)
+                .items(&Self::one)
+                .input(&Self::last_front_input)
+                .compute(&Self::keep_last_front)
+                .blocks(&Self::last_front_blocks)
+                .kept_through(&Self::last_front_kept_through));
+  if (!settings_.evaluation.enabled) return;
+  add_stage(stage<Nothing, Trees, MaterialEvaluation>("materials", 1, this)
+                .items(&Self::material_count)
+                .input(&Self::material_input)
+                .compute(&Self::evaluate_material)
+                .check(&Self::check_material)
+                .blocks(&Self::material_blocks)
+                .kept_through(&Self::next_stage_reads)
+                .fold(&Self::fold_material));
+  add_stage(stage<Nothing, Materials, std::vector<AverageRow>>("averages", 1, this)
+                .items(&Self::one)
+                .input(&Self::averages_input)
+                .compute(&Self::average)
+                .blocks(&Self::averages_blocks));
 }
 
-std::uint32_t BrdfSearchWorkload::stage_count() const {
-  return front_stage() + (settings_.evaluation.enabled ? 3 : 1);
+std::uint32_t BrdfSearchWorkload::kept_for_next_generation(const StageItem& at) const {
+  return stage_number("evaluate", at.step) + 1;
+}
+
+std::uint32_t BrdfSearchWorkload::last_front_kept_through(const StageItem& at) const {
+  return settings_.evaluation.enabled ? stage_number("materials") : at.id.stage;
 }
 
 std::size_t BrdfSearchWorkload::evaluated_materials() const {
   return settings_.evaluation.training.size() + settings_.evaluation.testing.size();
 }
 
-std::uint64_t BrdfSearchWorkload::item_count(std::uint32_t stage) const {
-  if (stage == front_stage() || stage == front_stage() + 2) return 1;
-  if (stage == front_stage() + 1) return evaluated_materials();
-  return stage % 2 == 0 ? settings_.islands + 1 : chunks();
-}
-
-std::uint32_t BrdfSearchWorkload::kept_through(WorkItemId id) const {
-  switch (role(id)) {
-    case Role::breeding: return id.stage + 2;  // the evaluation's context, then the next breeding and front
-    case Role::front: return id.stage == front_stage() ? id.stage + (settings_.evaluation.enabled ? 1 : 0) : id.stage + 2;
-    case Role::evaluation: return id.stage + 1;
-    case Role::material: return id.stage + 1;
-    case Role::averages: return id.stage;
-  }
-  return id.stage;
-}
-
-Bytes BrdfSearchWorkload::item_input(std::uint32_t stage, std::uint64_t item, const ItemResults& kept) const {
-  switch (role({stage, item})) {
-    case Role::breeding: return breeding_input(stage, item, kept);
-    case Role::front: return front_input(stage, kept);
-    case Role::evaluation: return {};  // the stage context holds the trees
-    case Role::material: return material_input(kept);
-    case Role::averages: return averages_input(kept);
-  }
-  return {};
-}
-
-Bytes BrdfSearchWorkload::compute(const runtime::ItemTask& task) const {
-  switch (role(task.id)) {
-    case Role::breeding: return breed(task);
-    case Role::front: return keep_front(task);
-    case Role::evaluation: return evaluate(task);
-    case Role::material: return evaluate_material(task);
-    case Role::averages: return average(task);
-  }
-  return {};
-}
-
 // Fits trees chunk x item .. chunk x (item + 1) - 1 of the context's distinct trees.
-Bytes BrdfSearchWorkload::evaluate(const runtime::ItemTask& task) const {
-  ByteReader in(task.context);
-  const double abandon_above = in.get<double>();
-  const std::size_t distinct = in.get_varint(), first = task.id.item * settings_.chunk;
-  const std::size_t last = std::min(distinct, first + settings_.chunk);
+EvaluationRecord BrdfSearchWorkload::evaluate(const Task<EvaluationContext, Nothing>& task) const {
+  const auto& trees = task.context.trees;
+  const std::size_t first = task.item() * settings_.chunk;
+  const std::size_t last = std::min(trees.size(), first + settings_.chunk);
   EvaluationRecord record;
-  if (first >= last) return encode(record);
-  for (std::size_t k = 0; k < first; ++k) read_tree(in, brdf_input_count, brdf_parameter_count);
   for (std::size_t k = first; k < last; ++k) {
-    const gp::SyntaxTree tree = read_tree(in, brdf_input_count, brdf_parameter_count);
+    const gp::SyntaxTree& tree = trees[k];
     const auto compiled = gp::compile(tree, brdf_parameter_count);
     CandidateScore score;
-    if (compiled) score = score_candidate(*compiled, *settings_.data, settings_.fit, task.random(k - first), abandon_above);
+    if (compiled)
+      score = score_candidate(*compiled, *settings_.data, settings_.fit, task.random(k - first), task.context.abandon_above);
     record.errors.push_back(score.error);
     record.sizes.push_back(double(tree.size()));
     score.material_errors.resize(settings_.data->materials(), gp::worst_error);
@@ -97,7 +101,13 @@ Bytes BrdfSearchWorkload::evaluate(const runtime::ItemTask& task) const {
     record.abandoned.push_back(score.abandoned ? 1 : 0);
     if (task.stop_requested()) throw runtime::Cancelled();
   }
-  return encode(record);
+  return record;
+}
+
+void BrdfSearchWorkload::check_evaluation(const StageItem&, const EvaluationRecord& r) const {
+  if (r.sizes.size() != r.errors.size() || r.material_errors.size() != r.errors.size() ||
+      r.abandoned.size() != r.errors.size())
+    throw RunError("a BRDF search evaluation record holds lists of different lengths");
 }
 
 std::string BrdfSearchWorkload::expression(const gp::SyntaxTree& tree) const {

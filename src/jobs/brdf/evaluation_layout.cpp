@@ -86,21 +86,27 @@ store::Block BrdfSearchWorkload::models_block(const FrontRecord& record) const {
   return block;
 }
 
-std::vector<store::Block> BrdfSearchWorkload::evaluation_blocks(WorkItemId id, const Bytes& result) const {
-  if (role(id) == Role::averages) {
-    const auto rows = decode_averages(result);
-    store::Block block{evaluation, "averages", {0}, {rows.size()}};
-    for (const auto& r : rows) {
-      block.values.insert(block.values.end(), {r.metric_error, r.image_l2, r.one_minus_ssim, r.l2_reduction, r.ssim_reduction});
-      block.texts.insert(block.texts.end(), {r.set, r.model});
-    }
-    return {block};
+std::vector<store::Block> BrdfSearchWorkload::averages_blocks(const StageItem&, const std::vector<AverageRow>& rows) const {
+  store::Block block{evaluation, "averages", {0}, {rows.size()}};
+  for (const auto& r : rows) {
+    block.values.insert(block.values.end(), {r.metric_error, r.image_l2, r.one_minus_ssim, r.l2_reduction, r.ssim_reduction});
+    block.texts.insert(block.texts.end(), {r.set, r.model});
   }
-  const auto record = decode_material(result);
-  const auto names = model_names();
-  const std::size_t m = id.item, resolution = settings_.evaluation.scene->samples.view().resolution();
-  if (record.models.size() != names.size() || record.renders.size() != (names.size() + 1) * resolution * resolution * 3)
+  return {block};
+}
+
+void BrdfSearchWorkload::check_material(const StageItem&, const MaterialEvaluation& record) const {
+  const std::size_t models = model_names().size(), resolution = settings_.evaluation.scene->samples.view().resolution();
+  if (record.models.size() != models || record.renders.size() != (models + 1) * resolution * resolution * 3)
     throw RunError("a BRDF evaluation record does not match the job's models and resolution");
+  std::size_t parameters = 0;
+  for (const auto& model : record.models) parameters += model.parameters.size();
+  if (parameters != models * 3 * brdf_parameter_count) throw RunError("a BRDF evaluation record has parameters missing");
+}
+
+std::vector<store::Block> BrdfSearchWorkload::material_blocks(const StageItem& at, const MaterialEvaluation& record) const {
+  const auto names = model_names();
+  const std::size_t m = at.item(), resolution = settings_.evaluation.scene->samples.view().resolution();
   store::Block rows{evaluation, "materials", {0}, {names.size()}};
   store::Block parameters{evaluation, "parameters", {m, 0, 0, 0}, {1, names.size(), 3, brdf_parameter_count}};
   for (std::size_t k = 0; k < names.size(); ++k) {
@@ -110,7 +116,6 @@ std::vector<store::Block> BrdfSearchWorkload::evaluation_blocks(WorkItemId id, c
                       {evaluated_material(m), m < settings_.evaluation.training.size() ? "training" : "testing", names[k]});
     parameters.values.insert(parameters.values.end(), model.parameters.begin(), model.parameters.end());
   }
-  if (parameters.values.size() != parameters.elements()) throw RunError("a BRDF evaluation record has parameters missing");
   store::Block renders{evaluation, "renders", {m, 0, 0, 0, 0}, {1, names.size() + 1, resolution, resolution, 3}};
   renders.values.assign(record.renders.begin(), record.renders.end());
   return {rows, parameters, renders};

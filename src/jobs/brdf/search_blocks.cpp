@@ -29,24 +29,16 @@ store::Block last_log_block(const FrontRecord& record, std::size_t generation) {
 
 }  // namespace
 
-std::vector<store::Block> BrdfSearchWorkload::blocks(WorkItemId id, const Bytes& result) const {
-  switch (role(id)) {
-    case Role::front: return front_blocks(id, result);
-    case Role::breeding: break;
-    case Role::evaluation: return {};
-    case Role::material:
-    case Role::averages: return evaluation_blocks(id, result);
-  }
-  if (generation_of(id.stage) == 0) return {};
-  const auto record = decode_breed(result);
+// The log row of the generation an island bred from (generation 0 breeds from none).
+std::vector<store::Block> BrdfSearchWorkload::breed_blocks(const StageItem& at, const BreedRecord& record) const {
+  if (at.step == 0) return {};
   store::Block log{"brdf", "log", {0}, {1}};
-  append_log_row(log, record.generation, id.item, record.statistics, record.migrants_in);
+  append_log_row(log, record.generation, at.item(), record.statistics, record.migrants_in);
   return {log};
 }
 
-std::vector<store::Block> BrdfSearchWorkload::front_blocks(WorkItemId id, const Bytes& result) const {
+std::vector<store::Block> BrdfSearchWorkload::front_blocks(const StageItem&, const FrontRecord& record) const {
   std::vector<store::Block> out;
-  const auto record = decode_front(result, brdf_input_count, brdf_parameter_count);
   if (!record.additions.empty()) {
     store::Block archive{"brdf", "archive", {0}, {record.additions.size()}};
     for (const auto& a : record.additions) {
@@ -55,8 +47,15 @@ std::vector<store::Block> BrdfSearchWorkload::front_blocks(WorkItemId id, const 
     }
     out.push_back(std::move(archive));
   }
-  if (id.stage == front_stage() && !record.last_generation.empty()) out.push_back(last_log_block(record, settings_.generations - 1));
-  if (id.stage != front_stage() || record.front.empty()) return out;
+  return out;
+}
+
+// The archive additions, the last generation's log rows, the front with its knee, the simplified knee and
+// the models evaluated.
+std::vector<store::Block> BrdfSearchWorkload::last_front_blocks(const StageItem& at, const FrontRecord& record) const {
+  std::vector<store::Block> out = front_blocks(at, record);
+  if (!record.last_generation.empty()) out.push_back(last_log_block(record, settings_.generations - 1));
+  if (record.front.empty()) return out;
   const std::size_t knee = front_knee(record.front);
   store::Block front{"brdf", "front", {0}, {record.front.size()}};
   for (std::size_t k = 0; k < record.front.size(); ++k) {

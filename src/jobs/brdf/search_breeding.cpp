@@ -9,31 +9,8 @@
 namespace pbrfit::jobs::brdf {
 namespace {
 
-using Evaluated = BrdfSearchWorkload::Evaluated;
-
-void write_members(ByteWriter& out, const std::vector<Evaluated>& members) {
-  out.put_varint(members.size());
-  for (const auto& m : members) {
-    write_genome(out, m.genome);
-    out.put(m.error);
-    out.put(m.size);
-    out.put(std::uint8_t(m.abandoned));
-  }
-}
-
-std::vector<Evaluated> read_members(ByteReader& in) {
-  std::vector<Evaluated> members(in.get_varint());
-  for (auto& m : members) {
-    m.genome = read_genome(in);
-    m.error = in.get<double>();
-    m.size = in.get<double>();
-    m.abandoned = in.get<std::uint8_t>() != 0;
-  }
-  return members;
-}
-
 // Better first: lower error, then smaller tree, then earlier slot.
-std::vector<std::size_t> ranked(const std::vector<Evaluated>& members) {
+std::vector<std::size_t> ranked(const std::vector<Parent>& members) {
   std::vector<std::size_t> order(members.size());
   for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
@@ -43,32 +20,35 @@ std::vector<std::size_t> ranked(const std::vector<Evaluated>& members) {
   return order;
 }
 
-void record_statistics(const std::vector<Evaluated>& members, BreedRecord& record) {
+void record_statistics(const std::vector<Parent>& members, BreedRecord& record) {
   std::vector<double> errors, sizes;
   std::vector<std::uint8_t> abandoned;
   for (const auto& m : members) errors.push_back(m.error), sizes.push_back(m.size), abandoned.push_back(m.abandoned);
   record.statistics = island_statistics(errors, sizes, abandoned);
 }
 
+// Slots first .. first + count - 1 of a generation, as parents.
+std::vector<Parent> parents(const std::vector<BrdfSearchWorkload::Evaluated>& all, std::size_t first, std::size_t count) {
+  std::vector<Parent> out;
+  for (std::size_t k = first; k < first + count; ++k) out.push_back({all[k].genome, all[k].error, all[k].size, all[k].abandoned});
+  return out;
+}
+
 }  // namespace
 
-Bytes BrdfSearchWorkload::breeding_input(std::uint32_t stage, std::uint64_t island, const ItemResults& kept) const {
-  ByteWriter out;
-  const std::uint32_t g = generation_of(stage);
-  if (g == 0) return out.take();
-  const auto all = generation_members(stage, kept);
+BreedInput BrdfSearchWorkload::breeding_input(std::uint32_t generation, std::uint64_t island, const Kept& kept) const {
+  BreedInput input;
+  if (generation == 0) return input;
+  const auto all = generation_members(generation - 1, kept);
   const std::size_t p = settings_.population;
-  std::vector<Evaluated> own(all.begin() + std::ptrdiff_t(island * p), all.begin() + std::ptrdiff_t((island + 1) * p));
-  std::vector<Evaluated> migrants;
-  if (settings_.islands > 1 && g % settings_.migration_interval == 0) {
+  input.own = parents(all, island * p, p);
+  if (settings_.islands > 1 && generation % settings_.migration_interval == 0) {
     const std::size_t before = (island + settings_.islands - 1) % settings_.islands;
-    const std::vector<Evaluated> theirs(all.begin() + std::ptrdiff_t(before * p), all.begin() + std::ptrdiff_t((before + 1) * p));
+    const auto theirs = parents(all, before * p, p);
     const auto order = ranked(theirs);
-    for (std::size_t k = 0; k < settings_.migrants; ++k) migrants.push_back(theirs[order[k]]);
+    for (std::size_t k = 0; k < settings_.migrants; ++k) input.migrants.push_back(theirs[order[k]]);
   }
-  write_members(out, own);
-  write_members(out, migrants);
-  return out.take();
+  return input;
 }
 
 BreedRecord& BrdfSearchWorkload::with_trees(BreedRecord& record) const {
@@ -76,17 +56,15 @@ BreedRecord& BrdfSearchWorkload::with_trees(BreedRecord& record) const {
   return record;
 }
 
-Bytes BrdfSearchWorkload::breed(const runtime::ItemTask& task) const {
+BreedRecord BrdfSearchWorkload::breed(const Task<Nothing, BreedInput>& task) const {
   BreedRecord record;
-  record.generation = generation_of(task.id.stage);
-  if (task.input.empty()) {
+  if (task.step() == 0) {
     record.genomes = gp::initial_genomes(settings_.population, task.random(0));
-    return encode(with_trees(record));
+    return with_trees(record);
   }
-  ByteReader in(task.input);
-  std::vector<Evaluated> own = read_members(in);
-  const std::vector<Evaluated> migrants = read_members(in);
-  record.generation -= 1;  // the statistics are those of the generation bred from
+  std::vector<Parent> own = task.input.own;
+  const std::vector<Parent>& migrants = task.input.migrants;
+  record.generation = task.step() - 1;  // the statistics are those of the generation bred from
   record_statistics(own, record);
   const auto order = ranked(own);
   for (std::size_t k = 0; k < migrants.size(); ++k) own[order[own.size() - 1 - k]] = migrants[k];  // the worst go
@@ -94,7 +72,12 @@ Bytes BrdfSearchWorkload::breed(const runtime::ItemTask& task) const {
   std::vector<gp::EditIndividual> population;
   for (const auto& m : own) population.push_back({m.genome, {m.error, m.size, 0.0, true}});
   record.genomes = gp::breed_island(population, settings_.evolution, task.random(0));
-  return encode(with_trees(record));
+  return with_trees(record);
+}
+
+void BrdfSearchWorkload::check_breed(const StageItem&, const BreedRecord& record) const {
+  if (record.trees.size() != record.genomes.size())
+    throw RunError("a BRDF search breeding record holds another number of trees than genomes");
 }
 
 }  // namespace pbrfit::jobs::brdf

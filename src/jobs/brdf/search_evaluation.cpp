@@ -68,11 +68,10 @@ std::vector<ScoredTree> BrdfSearchWorkload::evaluated_models(const FrontRecord& 
   return models;
 }
 
-Bytes BrdfSearchWorkload::material_input(const ItemResults& kept) const {
-  const auto record = decode_front(kept_result(kept, {front_stage(), 0}), brdf_input_count, brdf_parameter_count);
-  ByteWriter out;
-  write_scored(out, evaluated_models(record));
-  return out.take();
+std::vector<gp::SyntaxTree> BrdfSearchWorkload::material_input(std::uint32_t, std::uint64_t, const Kept& kept) const {
+  std::vector<gp::SyntaxTree> trees;
+  for (auto& m : evaluated_models(kept.at<FrontRecord>("last front", 0, 0))) trees.push_back(std::move(m.tree));
+  return trees;
 }
 
 std::string BrdfSearchWorkload::evaluated_material(std::uint64_t item) const {
@@ -80,27 +79,23 @@ std::string BrdfSearchWorkload::evaluated_material(std::uint64_t item) const {
   return item < e.training.size() ? e.training[item] : e.testing[item - e.training.size()];
 }
 
-Bytes BrdfSearchWorkload::evaluate_material(const runtime::ItemTask& task) const {
-  ByteReader in(task.input);
-  std::vector<gp::SyntaxTree> models;
-  for (auto& m : read_scored(in, brdf_input_count, brdf_parameter_count)) models.push_back(std::move(m.tree));
-  const std::string name = evaluated_material(task.id.item);
+MaterialEvaluation BrdfSearchWorkload::evaluate_material(const Task<Nothing, std::vector<gp::SyntaxTree>>& task) const {
+  const std::string name = evaluated_material(task.item());
   const auto material = load_material(name, settings_.evaluation.source);
   if (task.stop_requested()) throw runtime::Cancelled();
-  return encode(evaluate_on_material(*settings_.scene, *settings_.evaluation.scene, material, name, models, settings_.evaluation.fit,
-                                       settings_.evaluation.exposure, task.random(0)));
+  return evaluate_on_material(*settings_.scene, *settings_.evaluation.scene, material, name, task.input,
+                              settings_.evaluation.fit, settings_.evaluation.exposure, task.random(0));
 }
 
-Bytes BrdfSearchWorkload::averages_input(const ItemResults& kept) const {
-  ByteWriter out;
-  for (std::uint64_t m = 0; m < evaluated_materials(); ++m) out.put_bytes(kept_result(kept, {front_stage() + 1, m}));
-  return out.take();
-}
-
-Bytes BrdfSearchWorkload::average(const runtime::ItemTask& task) const {
-  ByteReader in(task.input);
+std::vector<MaterialEvaluation> BrdfSearchWorkload::averages_input(std::uint32_t, std::uint64_t, const Kept& kept) const {
   std::vector<MaterialEvaluation> materials;
-  for (std::uint64_t m = 0; m < evaluated_materials(); ++m) materials.push_back(decode_material(in.get_bytes()));
+  for (std::uint64_t m = 0; m < evaluated_materials(); ++m) materials.push_back(kept.at<MaterialEvaluation>("materials", 0, m));
+  return materials;
+}
+
+std::vector<AverageRow> BrdfSearchWorkload::average(const Task<Nothing, std::vector<MaterialEvaluation>>& task) const {
+  const auto& materials = task.input;
+  if (materials.size() != evaluated_materials()) throw RunError("the BRDF averages lack material evaluations");
   const auto names = model_names();
   std::vector<AverageRow> rows;
   const std::size_t training = settings_.evaluation.training.size();
@@ -123,7 +118,7 @@ Bytes BrdfSearchWorkload::average(const runtime::ItemTask& task) const {
       rows.push_back(std::move(row));
     }
   }
-  return encode(rows);
+  return rows;
 }
 
 }  // namespace pbrfit::jobs::brdf

@@ -43,6 +43,11 @@ FrontRecord merged(std::vector<ScoredTree> front, const std::vector<ScoredTree>&
   return out;
 }
 
+FrontRecord merged(const FrontInput& input) {
+  if (input.abandoned.size() != input.candidates.size()) throw std::logic_error("brdf search: a front input without its flags");
+  return merged(input.previous.front, input.candidates, input.abandoned);
+}
+
 // Per island (population consecutive candidates each), the log's figures of the last generation.
 std::vector<IslandStatistics> last_statistics(const std::vector<ScoredTree>& candidates,
                                               const std::vector<std::uint8_t>& abandoned, std::size_t population) {
@@ -58,41 +63,41 @@ std::vector<IslandStatistics> last_statistics(const std::vector<ScoredTree>& can
 
 }  // namespace
 
-Bytes BrdfSearchWorkload::front_input(std::uint32_t stage, const ItemResults& kept) const {
-  ByteWriter out;
-  if (stage == 0) return out.take();
-  const Bytes& previous = kept_result(kept, {stage - 2, item_count(stage - 2) - 1});
-  out.put_bytes(previous);
-  std::vector<ScoredTree> candidates;
-  std::vector<std::uint8_t> abandoned;
-  for (auto& m : generation_members(stage, kept)) {
-    candidates.push_back({std::move(m.tree), m.error, generation_of(stage) - 1u});
-    abandoned.push_back(m.abandoned);
+// The front kept at generation - 1 and the members of generation - 1 with their errors.
+FrontInput BrdfSearchWorkload::front_input(std::uint32_t generation, std::uint64_t, const Kept& kept) const {
+  FrontInput input;
+  if (generation == 0) return input;
+  input.previous = kept.at<FrontRecord>("front", generation - 1, 0);
+  for (auto& m : generation_members(generation - 1, kept)) {
+    input.candidates.push_back({std::move(m.tree), m.error, generation - 1u});
+    input.abandoned.push_back(m.abandoned);
   }
-  write_scored(out, candidates);
-  out.put_array(std::span<const std::uint8_t>(abandoned));
-  return out.take();
+  return input;
 }
 
-Bytes BrdfSearchWorkload::keep_front(const runtime::ItemTask& task) const {
-  if (task.input.empty()) return encode(FrontRecord{});
-  ByteReader in(task.input);
-  const FrontRecord previous = decode_front(in.get_bytes(), brdf_input_count, brdf_parameter_count);
-  const auto candidates = read_scored(in, brdf_input_count, brdf_parameter_count);
-  const auto abandoned = in.get_array<std::uint8_t>();
-  if (abandoned.size() != candidates.size()) throw std::logic_error("brdf search: a front input without its flags");
-  FrontRecord record = merged(previous.front, candidates, abandoned);
-  if (task.id.stage == front_stage()) record.last_generation = last_statistics(candidates, abandoned, settings_.population);
-  if (task.id.stage == front_stage() && !record.front.empty()) {
+// The front input after the last generation, as a next generation's front would have read it.
+FrontInput BrdfSearchWorkload::last_front_input(std::uint32_t, std::uint64_t, const Kept& kept) const {
+  return front_input(std::uint32_t(settings_.generations), 0, kept);
+}
+
+FrontRecord BrdfSearchWorkload::keep_front(const Task<Nothing, FrontInput>& task) const {
+  if (task.step() == 0) return {};
+  return merged(task.input);
+}
+
+FrontRecord BrdfSearchWorkload::keep_last_front(const Task<Nothing, FrontInput>& task) const {
+  FrontRecord record = merged(task.input);
+  record.last_generation = last_statistics(task.input.candidates, task.input.abandoned, settings_.population);
+  if (!record.front.empty()) {
     const ScoredTree& knee = record.front[front_knee(record.front)];
     record.simplified = {knee, cull(knee, task)};
   }
-  return encode(record);
+  return record;
 }
 
 // Repeatedly replaces an operation's subtree by one of its operands or by 1 while the error stays within
 // cull_tolerance of the knee's (each candidate refitted), until nothing more goes or the budget is spent.
-ScoredTree BrdfSearchWorkload::cull(const ScoredTree& knee, const runtime::ItemTask& task) const {
+ScoredTree BrdfSearchWorkload::cull(const ScoredTree& knee, const Task<Nothing, FrontInput>& task) const {
   const auto score = [&](const gp::SyntaxTree& tree) {
     const auto compiled = gp::compile(tree, brdf_parameter_count);
     return compiled ? score_candidate(*compiled, *settings_.data, settings_.fit, task.random(1)).error

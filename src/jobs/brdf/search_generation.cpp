@@ -1,6 +1,7 @@
 // The members of a generation of the genBRDF search (brdf_search_workload.hpp): the genomes and trees the
 // islands bred, the distinct trees the evaluation stage fits (each once, however many slots hold it), and
 // the errors mapped back to every slot.
+#include <algorithm>
 #include <stdexcept>
 #include <unordered_map>
 
@@ -38,10 +39,10 @@ DistinctTrees distinct(const std::vector<Evaluated>& members) {
 
 }  // namespace
 
-std::vector<Evaluated> BrdfSearchWorkload::bred_members(std::uint32_t breeding_stage, const ItemResults& kept) const {
+std::vector<Evaluated> BrdfSearchWorkload::bred_members(std::uint32_t generation, const Kept& kept) const {
   std::vector<Evaluated> out;
   for (std::uint64_t i = 0; i < settings_.islands; ++i) {
-    auto record = decode_breed(kept_result(kept, {breeding_stage, i}));
+    auto record = kept.at<BreedRecord>("breed", generation, i);
     for (std::size_t k = 0; k < record.genomes.size(); ++k)
       out.push_back({std::move(record.genomes[k]), std::move(record.trees[k])});
   }
@@ -51,33 +52,29 @@ std::vector<Evaluated> BrdfSearchWorkload::bred_members(std::uint32_t breeding_s
 
 // Fits are abandoned above the worst island median of the generation bred from (none in generation 0,
 // whose breeding records hold no statistics).
-double BrdfSearchWorkload::abandon_threshold(std::uint32_t breeding_stage, const ItemResults& kept) const {
-  if (!settings_.abandon_poor || generation_of(breeding_stage) == 0) return gp::worst_error;
+double BrdfSearchWorkload::abandon_threshold(std::uint32_t generation, const Kept& kept) const {
+  if (!settings_.abandon_poor || generation == 0) return gp::worst_error;
   double threshold = 0.0;
   for (std::uint64_t i = 0; i < settings_.islands; ++i)
-    threshold = std::max(threshold, decode_breed(kept_result(kept, {breeding_stage, i})).statistics.median_error);
+    threshold = std::max(threshold, kept.at<BreedRecord>("breed", generation, i).statistics.median_error);
   return threshold;
 }
 
-// The abandon threshold, then the distinct trees of the generation bred at stage - 1, for the evaluation.
-Bytes BrdfSearchWorkload::stage_context(std::uint32_t stage, const ItemResults& kept) const {
-  if (role({stage, 0}) != Role::evaluation) return {};
-  const auto members = bred_members(stage - 1, kept);
-  ByteWriter out;
-  out.put(abandon_threshold(stage - 1, kept));
-  const auto trees = distinct(members);
-  out.put_varint(trees.first_slot.size());
-  for (const std::size_t s : trees.first_slot) write_tree(out, members[s].tree);
-  return out.take();
+EvaluationContext BrdfSearchWorkload::evaluation_context(std::uint32_t generation, const Kept& kept) const {
+  const auto members = bred_members(generation, kept);
+  EvaluationContext context;
+  context.abandon_above = abandon_threshold(generation, kept);
+  for (const std::size_t s : distinct(members).first_slot) context.trees.push_back(members[s].tree);
+  return context;
 }
 
-std::vector<Evaluated> BrdfSearchWorkload::generation_members(std::uint32_t breeding_stage, const ItemResults& kept) const {
-  auto members = bred_members(breeding_stage - 2, kept);
+std::vector<Evaluated> BrdfSearchWorkload::generation_members(std::uint32_t generation, const Kept& kept) const {
+  auto members = bred_members(generation, kept);
   const auto trees = distinct(members);
   std::vector<double> errors;
   std::vector<std::uint8_t> abandoned;
   for (std::uint64_t c = 0; c < chunks(); ++c) {
-    const auto record = decode_evaluation(kept_result(kept, {breeding_stage - 1, c}));
+    const auto record = kept.at<EvaluationRecord>("evaluate", generation, c);
     errors.insert(errors.end(), record.errors.begin(), record.errors.end());
     abandoned.insert(abandoned.end(), record.abandoned.begin(), record.abandoned.end());
   }

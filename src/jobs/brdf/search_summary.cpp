@@ -9,39 +9,20 @@
 #include "search_records.hpp"
 
 namespace pbrfit::jobs::brdf {
-namespace {
 
-struct Summary {
-  std::uint64_t evaluated = 0;   // genomes
-  std::uint64_t generation = 0;  // highest generation evaluated, plus one
-  double best = std::numeric_limits<double>::infinity();
-  double best_size = 0.0;
-  std::uint64_t materials = 0;  // evaluated after the search
-};
+void BrdfSearchWorkload::fold_material(Summary& sum, const StageItem&, const MaterialEvaluation&) const { ++sum.materials; }
 
-}  // namespace
-
-void BrdfSearchWorkload::fold_summary(Bytes& summary, WorkItemId id, const Bytes& result) const {
-  if (role(id) != Role::evaluation && role(id) != Role::material) return;
-  auto sum = runtime::summary_as<Summary>(summary);
-  if (role(id) == Role::material) {
-    ++sum.materials;
-    runtime::store_summary(summary, sum);
-    return;
-  }
-  const auto record = decode_evaluation(result);
+void BrdfSearchWorkload::fold_evaluation(Summary& sum, const StageItem& at, const EvaluationRecord& record) const {
   sum.evaluated += record.errors.size();
-  sum.generation = std::max<std::uint64_t>(sum.generation, generation_of(id.stage) + 1u);
+  sum.generation = std::max<std::uint64_t>(sum.generation, at.step + 1u);
   for (std::size_t k = 0; k < record.errors.size(); ++k)
     if (record.errors[k] < sum.best || (record.errors[k] == sum.best && record.sizes[k] < sum.best_size)) {
       sum.best = record.errors[k];
       sum.best_size = record.sizes[k];
     }
-  runtime::store_summary(summary, sum);
 }
 
-std::string BrdfSearchWorkload::headline(const Bytes& summary) const {
-  const auto sum = runtime::summary_as<Summary>(summary);
+std::string BrdfSearchWorkload::headline_of(const Summary& sum) const {
   if (sum.evaluated == 0) return "no BRDF evaluated yet";
   char text[240];
   std::snprintf(text, sizeof text, "generation %llu of %zu, %llu BRDFs fitted; best error %.4g (tree of %.0f nodes)",
@@ -52,8 +33,8 @@ std::string BrdfSearchWorkload::headline(const Bytes& summary) const {
          std::to_string(evaluated_materials()) + " materials";
 }
 
-double BrdfSearchWorkload::work_done(const Bytes& summary) const {
-  return double(runtime::summary_as<Summary>(summary).evaluated) * double(3 * settings_.data->materials());
+double BrdfSearchWorkload::work_done_in(const Summary& sum) const {
+  return double(sum.evaluated) * double(3 * settings_.data->materials());
 }
 
 }  // namespace pbrfit::jobs::brdf

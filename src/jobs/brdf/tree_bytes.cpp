@@ -52,44 +52,11 @@ gp::SyntaxTree read_tree(ByteReader& in, std::size_t inputs, std::size_t paramet
   }
 }
 
-void write_genome(ByteWriter& out, const gp::Genome& genome) {
-  out.put_varint(genome.size());
-  for (const auto& edit : genome) {
-    out.put(std::uint8_t(edit.kind));
-    out.put(edit.first);
-    out.put(edit.second);
-  }
-}
-
-gp::Genome read_genome(ByteReader& in) {
-  gp::Genome genome(count(in, 9));
-  for (auto& edit : genome) {
-    const auto kind = in.get<std::uint8_t>();
-    if (kind > 3) reject(in, "an unknown edit");
-    edit = {gp::EditKind(kind), in.get<std::uint32_t>(), in.get<std::uint32_t>()};
-  }
-  return genome;
-}
-
-void write_scored(ByteWriter& out, const std::vector<ScoredTree>& trees) {
-  out.put_varint(trees.size());
-  for (const auto& t : trees) {
-    write_tree(out, t.tree);
-    out.put(t.error);
-    out.put_varint(t.generation);
-  }
-}
-
-std::vector<ScoredTree> read_scored(ByteReader& in, std::size_t inputs, std::size_t parameters) {
-  std::vector<ScoredTree> trees;
-  for (std::uint64_t n = count(in, 10); n-- > 0;) {
-    ScoredTree t;
-    t.tree = read_tree(in, inputs, parameters);
-    t.error = in.get<double>();
-    t.generation = in.get_varint();
-    trees.push_back(std::move(t));
-  }
-  return trees;
+gp::Edit read_edit(ByteReader& in) {
+  const auto kind = in.get<std::uint8_t>();
+  if (kind > 3) reject(in, "an unknown edit");
+  const auto first = in.get<std::uint32_t>();
+  return {gp::EditKind(kind), first, in.get<std::uint32_t>()};
 }
 
 }  // namespace pbrfit::jobs::brdf

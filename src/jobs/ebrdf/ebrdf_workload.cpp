@@ -32,15 +32,21 @@ std::string level_group(const ComponentSettings& component, std::size_t level) {
 
 EbrdfWorkload::EbrdfWorkload(EbrdfSettings settings) : settings_(std::move(settings)), items_(settings_) {
   for (const auto& c : settings_.components) albedo_.emplace_back(eb::BaseLobe{c.component, settings_.roughness * settings_.roughness});
+  add_stage(runtime::stage<Nothing, Nothing, TileFits>("tiles", 1, this)
+                .items(&EbrdfWorkload::item_total)
+                .compute(&EbrdfWorkload::compute_item)
+                .check(&EbrdfWorkload::check_item)
+                .blocks(&EbrdfWorkload::item_blocks)
+                .fold(&EbrdfWorkload::fold_item));
 }
 
 std::size_t EbrdfWorkload::fits_in(const TileItem& tile) const {
   return tile.width * tile.height * settings_.components[tile.component].views.count();
 }
 
-std::vector<float> EbrdfWorkload::fit_tile(const TileItem& tile, const runtime::ItemTask& task) const {
+EbrdfWorkload::TileFits EbrdfWorkload::fit_tile(const TileItem& tile, const Task& task) const {
   const ComponentSettings& component = settings_.components[tile.component];
-  const eb::FootprintSampler sampler(*settings_.map, sampling_for(settings_, component, task.seed),
+  const eb::FootprintSampler sampler(*settings_.map, sampling_for(settings_, component, task.seed()),
                                      albedo_[tile.component]);
   const std::size_t views = component.views.count();
   std::vector<float> out;
@@ -66,23 +72,18 @@ std::vector<float> EbrdfWorkload::fit_tile(const TileItem& tile, const runtime::
   return out;
 }
 
-Bytes EbrdfWorkload::compute(const runtime::ItemTask& task) const {
-  ByteWriter writer;
-  if (task.id.item == 0) return writer.take();  // the normal map: its blocks come from the map itself
-  const std::vector<float> values = fit_tile(items_.find(task.id.item), task);
-  writer.put_array(std::span<const float>(values));
-  return writer.take();
+EbrdfWorkload::TileFits EbrdfWorkload::compute_item(const Task& task) const {
+  if (task.item() == 0) return {};  // the normal map: its blocks come from the map itself
+  return fit_tile(items_.find(task.item()), task);
 }
 
-std::vector<float> EbrdfWorkload::decode(WorkItemId id, const Bytes& result) const {
-  ByteReader reader(result);
-  auto values = reader.get_array<float>();
-  if (values.size() != fits_in(items_.find(id.item)) * values_per_fit)
-    throw RunError("ebrdf: a tile result has the wrong length");
-  return values;
+void EbrdfWorkload::check_item(const runtime::StageItem& at, const TileFits& fits) const {
+  const std::size_t expected = at.item() == 0 ? 0 : fits_in(items_.find(at.item())) * values_per_fit;
+  if (fits.size() != expected) throw RunError("ebrdf: a tile result has the wrong length");
 }
 
-std::vector<store::Block> EbrdfWorkload::blocks(WorkItemId id, const Bytes& result) const {
+std::vector<store::Block> EbrdfWorkload::item_blocks(const runtime::StageItem& at, const TileFits& values) const {
+  const WorkItemId id = at.id;
   if (id.item == 0) {
     const std::uint64_t n = settings_.map->size();
     store::Block normals{"ebrdf/normal_map", "normal", {0, 0, 0}, {n, n, 3}};
@@ -91,7 +92,6 @@ std::vector<store::Block> EbrdfWorkload::blocks(WorkItemId id, const Bytes& resu
   }
   const TileItem& tile = items_.find(id.item);
   const ComponentSettings& component = settings_.components[tile.component];
-  const std::vector<float> values = decode(id, result);
   const std::uint64_t nt = component.views.n_theta, np = component.views.n_phi;
   const std::string group = level_group(component, tile.level);
   const std::vector<std::uint64_t> offset = {tile.y0, tile.x0, 0, 0};
@@ -108,21 +108,16 @@ std::vector<store::Block> EbrdfWorkload::blocks(WorkItemId id, const Bytes& resu
   return {std::move(matrix), std::move(amplitude), std::move(error)};
 }
 
-void EbrdfWorkload::fold_summary(Bytes& summary, WorkItemId id, const Bytes& result) const {
-  if (id.item == 0) return;
-  auto sum = runtime::summary_as<Summary>(summary);
-  const std::vector<float> values = decode(id, result);
+void EbrdfWorkload::fold_item(Summary& sum, const runtime::StageItem&, const TileFits& values) const {
   for (std::size_t f = 0; f < values.size() / values_per_fit; ++f) {
     const double error = values[f * values_per_fit + 10];
     ++sum.fits;
     sum.error_sum_micro += std::uint64_t(std::llround(std::max(0.0, error) * 1e6));
     sum.max_error = std::max(sum.max_error, error);
   }
-  runtime::store_summary(summary, sum);
 }
 
-std::string EbrdfWorkload::headline(const Bytes& summary) const {
-  const auto sum = runtime::summary_as<Summary>(summary);
+std::string EbrdfWorkload::headline_of(const Summary& sum) const {
   if (sum.fits == 0) return "no fits yet";
   char text[160];
   std::snprintf(text, sizeof text, "%llu LTC fits, mean sliced Wasserstein error %.4f, max %.4f",
@@ -130,7 +125,5 @@ std::string EbrdfWorkload::headline(const Bytes& summary) const {
                 sum.max_error);
   return text;
 }
-
-double EbrdfWorkload::work_done(const Bytes& summary) const { return double(runtime::summary_as<Summary>(summary).fits); }
 
 }  // namespace pbrfit::jobs::ebrdf

@@ -35,11 +35,18 @@ double display_mse(const RgbImage& image, const RgbImage& truth, const eb::Plane
 }  // namespace
 
 RenderWorkload::RenderWorkload(RenderSettings settings)
-    : settings_(std::move(settings)), base_ltc_(settings_.tables->alpha) {}
+    : settings_(std::move(settings)), base_ltc_(settings_.tables->alpha) {
+  add_stage(runtime::stage<Nothing, Nothing, Rendered>("views", 1, this)
+                .items(&RenderWorkload::view_count)
+                .compute(&RenderWorkload::render)
+                .check(&RenderWorkload::check_render)
+                .blocks(&RenderWorkload::render_blocks)
+                .fold(&RenderWorkload::fold_render));
+}
 
-Bytes RenderWorkload::compute(const runtime::ItemTask& task) const {
-  const std::size_t scene_index = task.id.item / settings_.distances.size();
-  const double distance = settings_.distances[task.id.item % settings_.distances.size()];
+RenderWorkload::Rendered RenderWorkload::render(const runtime::StageTask<Nothing, Nothing>& task) const {
+  const std::size_t scene_index = task.item() / settings_.distances.size();
+  const double distance = settings_.distances[task.item() % settings_.distances.size()];
   const eb::PlaneScene scene = eb::make_plane_scene(settings_.scenes[scene_index], distance, settings_.resolution);
   const PrefilteredTables& t = *settings_.tables;
   const eb::RenderInputs inputs{t.map.get(), &base_ltc_, &*t.specular, &*t.diffuse, settings_.shading};
@@ -48,31 +55,22 @@ Bytes RenderWorkload::compute(const runtime::ItemTask& task) const {
     if (task.stop_requested()) throw runtime::Cancelled();
     images.push_back(eb::render_plane(scene, method, inputs));
   }
-  ByteWriter out;
-  std::vector<std::uint8_t> pixels;
-  for (const RgbImage& image : images)
-    for (float v : image.values()) pixels.push_back(std::uint8_t(std::lround(255.0 * display(v, settings_.exposure))));
-  out.put_array(std::span<const std::uint8_t>(pixels));
-  out.put(display_mse(images[1], images[0], scene, settings_.exposure));
-  out.put(display_mse(images[2], images[0], scene, settings_.exposure));
-  out.put(eb::centre_texels_per_pixel(scene, t.map->size()));
-  return out.take();
-}
-
-RenderWorkload::Rendered RenderWorkload::decode(const Bytes& bytes) const {
-  ByteReader in(bytes);
   Rendered r;
-  r.display = in.get_array<std::uint8_t>();
-  if (r.display.size() != 3 * settings_.resolution * settings_.resolution * 3)
-    throw RunError("ebrdf_render: a rendered item has the wrong size");
-  r.naive_mse = in.get<double>();
-  r.ours_mse = in.get<double>();
-  r.texels_per_pixel = in.get<double>();
+  for (const RgbImage& image : images)
+    for (float v : image.values()) r.display.push_back(std::uint8_t(std::lround(255.0 * display(v, settings_.exposure))));
+  r.naive_mse = display_mse(images[1], images[0], scene, settings_.exposure);
+  r.ours_mse = display_mse(images[2], images[0], scene, settings_.exposure);
+  r.texels_per_pixel = eb::centre_texels_per_pixel(scene, t.map->size());
   return r;
 }
 
-std::vector<store::Block> RenderWorkload::blocks(WorkItemId id, const Bytes& result) const {
-  const Rendered r = decode(result);
+void RenderWorkload::check_render(const runtime::StageItem&, const Rendered& r) const {
+  if (r.display.size() != 3 * settings_.resolution * settings_.resolution * 3)
+    throw RunError("ebrdf_render: a rendered item has the wrong size");
+}
+
+std::vector<store::Block> RenderWorkload::render_blocks(const runtime::StageItem& at, const Rendered& r) const {
+  const WorkItemId id = at.id;
   const std::uint64_t scene = id.item / settings_.distances.size(), distance = id.item % settings_.distances.size();
   const std::uint64_t n = settings_.resolution;
   store::Block renders{"ebrdf_render", "renders", {scene, distance, 0, 0, 0, 0}, {1, 1, 3, n, n, 3}};
@@ -82,19 +80,15 @@ std::vector<store::Block> RenderWorkload::blocks(WorkItemId id, const Bytes& res
           {"ebrdf_render", "texels_per_pixel", {scene, distance}, {1, 1}, {r.texels_per_pixel}}};
 }
 
-void RenderWorkload::fold_summary(Bytes& summary, WorkItemId, const Bytes& result) const {
-  auto sum = runtime::summary_as<Summary>(summary);
-  const Rendered r = decode(result);
+void RenderWorkload::fold_render(Summary& sum, const runtime::StageItem&, const Rendered& r) const {
   ++sum.images;
   if (r.texels_per_pixel >= 2.0) {
     ++sum.compared;
     sum.ours_better += r.ours_mse < r.naive_mse;
   }
-  runtime::store_summary(summary, sum);
 }
 
-std::string RenderWorkload::headline(const Bytes& summary) const {
-  const auto sum = runtime::summary_as<Summary>(summary);
+std::string RenderWorkload::headline_of(const Summary& sum) const {
   char text[160];
   std::snprintf(text, sizeof text, "%llu scene views rendered; prefiltered below naive in %llu of %llu with >= 2 texels per pixel",
                 static_cast<unsigned long long>(sum.images), static_cast<unsigned long long>(sum.ours_better),

@@ -35,7 +35,14 @@ std::string format_number(double value) {
 DfgTable::DfgTable(const DfgSettings& settings)
     : settings_(settings),
       n_dot_v_(unit_axis(settings.n_dot_v_count, settings.placement)),
-      roughness_(unit_axis(settings.roughness_count, settings.placement)) {}
+      roughness_(unit_axis(settings.roughness_count, settings.placement)) {
+  add_stage(runtime::stage<Nothing, Nothing, Row>("rows", 1, this)
+                .items(&DfgTable::row_count)
+                .compute(&DfgTable::compute_row)
+                .check(&DfgTable::check_row)
+                .blocks(&DfgTable::row_blocks)
+                .fold(&DfgTable::fold_row));
+}
 
 double DfgTable::alpha(std::uint64_t row) const { return brdf::alpha_from(settings_.roughness, roughness_[row]); }
 
@@ -96,8 +103,8 @@ void DfgTable::require_converged(bool converged, double error, std::size_t evalu
   throw RunError(text);
 }
 
-Bytes DfgTable::compute(const runtime::ItemTask& task) const {
-  const std::uint64_t item = task.id.item;
+DfgTable::Row DfgTable::compute_row(const Task& task) const {
+  const std::uint64_t item = task.item();
   const double a = alpha(item);
   const std::string r = roughness_axis_name(settings_.roughness) + " " + format_number(roughness_[item]);
   Row row;
@@ -124,40 +131,19 @@ Bytes DfgTable::compute(const runtime::ItemTask& task) const {
     row.average_energy = average.value;
     row.average_energy_error = average.error_estimate;
   }
-  return encode(row);
-}
-
-Bytes DfgTable::encode(const Row& row) const {
-  ByteWriter out;
-  for (const auto* v : {&row.scale, &row.bias, &row.error_estimate, &row.evaluations})
-    out.put_array(std::span<const double>(*v));
-  out.put(row.average_energy);
-  out.put(row.average_energy_error);
-  if (settings_.cloth)
-    for (const auto* v : {&row.cloth, &row.cloth_error, &row.cloth_evaluations}) out.put_array(std::span<const double>(*v));
-  return out.take();
-}
-
-DfgTable::Row DfgTable::decode(const Bytes& bytes) const {
-  ByteReader in(bytes);
-  Row row;
-  for (auto* v : {&row.scale, &row.bias, &row.error_estimate, &row.evaluations}) {
-    *v = in.get_array<double>();
-    if (v->size() != n_dot_v_.size()) throw RunError("DFG row result has the wrong length");
-  }
-  row.average_energy = in.get<double>();
-  row.average_energy_error = in.get<double>();
-  if (settings_.cloth) {
-    for (auto* v : {&row.cloth, &row.cloth_error, &row.cloth_evaluations}) {
-      *v = in.get_array<double>();
-      if (v->size() != n_dot_v_.size()) throw RunError("DFG row result has the wrong length");
-    }
-  }
   return row;
 }
 
-std::vector<store::Block> DfgTable::blocks(WorkItemId id, const Bytes& result) const {
-  const Row row = decode(result);
+void DfgTable::check_row(const runtime::StageItem&, const Row& row) const {
+  const std::size_t cloth_length = settings_.cloth ? n_dot_v_.size() : 0;
+  for (const auto* v : {&row.scale, &row.bias, &row.error_estimate, &row.evaluations})
+    if (v->size() != n_dot_v_.size()) throw RunError("DFG row result has the wrong length");
+  for (const auto* v : {&row.cloth, &row.cloth_error, &row.cloth_evaluations})
+    if (v->size() != cloth_length) throw RunError("DFG row result has the wrong length");
+}
+
+std::vector<store::Block> DfgTable::row_blocks(const runtime::StageItem& at, const Row& row) const {
+  const WorkItemId id = at.id;
   const std::uint64_t n = n_dot_v_.size();
   auto row_block = [&](const char* table, std::vector<double> values) {
     return store::Block{"dfg", table, {id.item, 0}, {1, n}, std::move(values)};
@@ -182,9 +168,7 @@ std::vector<store::Block> DfgTable::blocks(WorkItemId id, const Bytes& result) c
   return out;
 }
 
-void DfgTable::fold_summary(Bytes& summary, WorkItemId, const Bytes& result) const {
-  auto sum = runtime::summary_as<Summary>(summary);
-  const Row row = decode(result);
+void DfgTable::fold_row(Summary& sum, const runtime::StageItem&, const Row& row) const {
   for (std::size_t i = 0; i < row.scale.size(); ++i) {
     sum.worst_error = std::max(sum.worst_error, row.error_estimate[i]);
     sum.above_tolerance += row.error_estimate[i] > settings_.integration.abs_tolerance;
@@ -195,11 +179,9 @@ void DfgTable::fold_summary(Bytes& summary, WorkItemId, const Bytes& result) con
       sum.above_tolerance += row.cloth_error[i] > settings_.integration.abs_tolerance;
     }
   }
-  runtime::store_summary(summary, sum);
 }
 
-std::string DfgTable::headline(const Bytes& summary) const {
-  const auto sum = runtime::summary_as<Summary>(summary);
+std::string DfgTable::headline_of(const Summary& sum) const {
   if (sum.entries == 0) return "no entries yet";
   char text[200];
   std::snprintf(text, sizeof text, "%llu entries, max error estimate %.2g (tolerance %.2g%s), %.0f evaluations/entry",

@@ -14,12 +14,6 @@ namespace {
 // Offsets of an entry's values (values_per_entry of them).
 enum Value : std::size_t { sh0 = 0, dir_x = 9, dir_z = 10, beta = 11, zh0 = 12, zh1 = 13, zh2 = 14, estimate = 15 };
 
-struct Summary {
-  double worst_estimate = 0.0;
-  double worst_beta_deviation = 0.0;
-  std::uint64_t entries = 0;
-};
-
 double ratio(double a, double b) { return b != 0.0 ? a / b : std::nan(""); }
 
 }  // namespace
@@ -27,7 +21,14 @@ double ratio(double a, double b) { return b != 0.0 ? a / b : std::nan(""); }
 DisneyDiffuseTable::DisneyDiffuseTable(const DisneyDiffuseSettings& settings)
     : settings_(settings),
       n_dot_v_(unit_axis(settings.n_dot_v_count, settings.placement)),
-      roughness_(unit_axis(settings.roughness_count, settings.placement)) {}
+      roughness_(unit_axis(settings.roughness_count, settings.placement)) {
+  add_stage(runtime::stage<Nothing, Nothing, Row>("rows", 1, this)
+                .items(&DisneyDiffuseTable::row_count)
+                .compute(&DisneyDiffuseTable::compute_row)
+                .check(&DisneyDiffuseTable::check_row)
+                .blocks(&DisneyDiffuseTable::row_blocks)
+                .fold(&DisneyDiffuseTable::fold_row));
+}
 
 store::ResultLayout DisneyDiffuseTable::layout() const {
   store::Group g;
@@ -68,8 +69,8 @@ store::ResultLayout DisneyDiffuseTable::layout() const {
   return {{g}};
 }
 
-Bytes DisneyDiffuseTable::compute(const runtime::ItemTask& task) const {
-  const double r = roughness_[task.id.item];
+DisneyDiffuseTable::Row DisneyDiffuseTable::compute_row(const runtime::StageTask<Nothing, Nothing>& task) const {
+  const double r = roughness_[task.item()];
   std::vector<double> row;
   for (double mu : n_dot_v_) {
     const auto lobe = brdf::disney_diffuse_lobe(r, mu, settings_.integration);
@@ -85,20 +86,15 @@ Bytes DisneyDiffuseTable::compute(const runtime::ItemTask& task) const {
                            lobe.error_estimate});
     if (task.stop_requested()) throw runtime::Cancelled();
   }
-  ByteWriter out;
-  out.put_array(std::span<const double>(row));
-  return out.take();
-}
-
-std::vector<double> DisneyDiffuseTable::decode(const Bytes& bytes) const {
-  ByteReader in(bytes);
-  auto row = in.get_array<double>();
-  if (row.size() != n_dot_v_.size() * values_per_entry) throw RunError("Disney diffuse row result has the wrong length");
   return row;
 }
 
-std::vector<store::Block> DisneyDiffuseTable::blocks(WorkItemId id, const Bytes& result) const {
-  const auto row = decode(result);
+void DisneyDiffuseTable::check_row(const runtime::StageItem&, const Row& row) const {
+  if (row.size() != n_dot_v_.size() * values_per_entry) throw RunError("Disney diffuse row result has the wrong length");
+}
+
+std::vector<store::Block> DisneyDiffuseTable::row_blocks(const runtime::StageItem& at, const Row& row) const {
+  const WorkItemId id = at.id;
   const std::uint64_t n = n_dot_v_.size();
   const double r = roughness_[id.item];
   std::map<std::string, std::vector<double>> columns;
@@ -130,21 +126,17 @@ std::vector<store::Block> DisneyDiffuseTable::blocks(WorkItemId id, const Bytes&
   return out;
 }
 
-void DisneyDiffuseTable::fold_summary(Bytes& summary, WorkItemId id, const Bytes& result) const {
-  auto sum = runtime::summary_as<Summary>(summary);
-  const auto row = decode(result);
+void DisneyDiffuseTable::fold_row(Summary& sum, const runtime::StageItem& at, const Row& row) const {
   for (std::size_t i = 0; i < n_dot_v_.size(); ++i) {
     const double* e = row.data() + i * values_per_entry;
     sum.worst_estimate = std::max(sum.worst_estimate, e[estimate]);
-    const double deviation = std::abs(brdf::course_disney_beta(roughness_[id.item], n_dot_v_[i]) - e[beta]);
+    const double deviation = std::abs(brdf::course_disney_beta(roughness_[at.item()], n_dot_v_[i]) - e[beta]);
     sum.worst_beta_deviation = std::max(sum.worst_beta_deviation, deviation);
     ++sum.entries;
   }
-  runtime::store_summary(summary, sum);
 }
 
-std::string DisneyDiffuseTable::headline(const Bytes& summary) const {
-  const auto sum = runtime::summary_as<Summary>(summary);
+std::string DisneyDiffuseTable::headline_of(const Summary& sum) const {
   if (sum.entries == 0) return "no entries yet";
   char text[200];
   std::snprintf(text, sizeof text, "%llu entries, max error estimate %.2g, largest |course beta - beta| %.3g",

@@ -59,53 +59,53 @@ store::Group SweepWorkload::projection_group(std::size_t m, std::size_t p) const
   return g;
 }
 
-Bytes SweepWorkload::projection_input(const ItemResults& kept) const {
-  ByteWriter out;
+SweepWorkload::LastLevel SweepWorkload::last_level(std::uint32_t, std::uint64_t,
+                                                   const runtime::KeptResults& kept) const {
+  LastLevel fits;
   const auto& grid = schedule_.levels().back();
   for (std::size_t c = 0; c < grid.cell_count(); ++c) {
     const pbrfit::sweep::CellRef cell{final_level(), c};
-    const auto found = kept.find({schedule_.stage_of(cell), schedule_.item_of(cell)});
-    if (found == kept.end()) throw std::logic_error("sweep: a last-level fit was not kept for the projections");
-    out.put_bytes(found->second);
+    fits.push_back(kept.at<CellFits>({schedule_.stage_of(cell), schedule_.item_of(cell)}));
   }
-  return out.take();
+  return fits;
 }
 
-// The result: for each model, each projected cell (flat order), each parameter then the error: mean, deviation.
-Bytes SweepWorkload::project(const runtime::ItemTask& task) const {
+SweepWorkload::Projection SweepWorkload::project(const runtime::StageTask<Nothing, LastLevel>& task) const {
   const auto& grid = schedule_.levels().back();
-  const std::size_t axis = settings_.projections[task.id.item];
-  const auto reduced = projected_grid(task.id.item);
+  if (task.input.size() != grid.cell_count()) throw RunError("sweep: a projection's input lacks last-level fits");
+  const std::size_t axis = settings_.projections[task.item()];
+  const auto reduced = projected_grid(task.item());
   std::vector<std::vector<std::vector<Moments>>> moments(models_.size());  // [model][reduced cell][quantity]
   for (std::size_t m = 0; m < models_.size(); ++m)
     moments[m].assign(reduced.cell_count(), std::vector<Moments>(models_[m].parameters.size() + 1));
-  ByteReader in(task.input);
   for (std::size_t c = 0; c < grid.cell_count(); ++c) {
     auto at = grid.indices(c);
     at.erase(at.begin() + std::ptrdiff_t(axis));
     const std::size_t r = reduced.flat_index(at);
-    const auto fits = decode_cell(in.get_bytes(), shapes_);
+    const CellFits& fits = task.input[c];
+    require_shapes(fits, shapes_);
     for (std::size_t m = 0; m < fits.size(); ++m) {
       for (std::size_t k = 0; k < fits[m].parameters.size(); ++k) moments[m][r][k].add(fits[m].parameters[k]);
       moments[m][r].back().add(fits[m].error);
     }
   }
-  std::vector<double> values;
+  Projection values;
   for (const auto& model : moments)
     for (const auto& cell : model)
       for (const auto& q : cell) values.insert(values.end(), {q.mean, q.deviation()});
-  ByteWriter out;
-  out.put_array(std::span<const double>(values));
-  return out.take();
+  return values;
 }
 
-std::vector<store::Block> SweepWorkload::projection_blocks(WorkItemId id, const Bytes& result) const {
-  ByteReader in(result);
-  const auto values = in.get_array<double>();
-  const auto reduced = projected_grid(id.item);
+void SweepWorkload::check_projection(const StageItem& at, const Projection& values) const {
+  const auto reduced = projected_grid(at.item());
   std::size_t expected = 0;
   for (const auto& model : models_) expected += reduced.cell_count() * (model.parameters.size() + 1) * 2;
   if (values.size() != expected) throw RunError("a sweep projection result has the wrong length");
+}
+
+std::vector<store::Block> SweepWorkload::projection_blocks(const StageItem& at, const Projection& values) const {
+  const WorkItemId id = at.id;
+  const auto reduced = projected_grid(id.item);
   std::vector<store::Block> out;
   std::size_t next = 0;
   for (std::size_t m = 0; m < models_.size(); ++m) {

@@ -11,24 +11,10 @@
 namespace pbrfit::jobs::sweep {
 namespace {
 
-constexpr std::size_t summary_models = 8;
-constexpr std::size_t summary_levels = 32;
+constexpr std::size_t summary_models = SweepSummary::models;
+constexpr std::size_t summary_levels = SweepSummary::levels;
 
-struct ModelSummary {
-  double best = std::numeric_limits<double>::infinity();
-  double worst = 0.0;
-  std::uint64_t evaluations = 0;
-  std::uint64_t global_runs = 0;
-  std::uint64_t non_finite = 0;
-};
-
-struct Summary {
-  std::uint64_t cells = 0;
-  std::uint64_t level_cells[summary_levels] = {};
-  ModelSummary models[summary_models] = {};
-};
-
-void fold(ModelSummary& s, const ModelFit& fit) {
+void fold(SweepSummary::Model& s, const ModelFit& fit) {
   if (std::isfinite(fit.error)) {
     s.best = std::min(s.best, fit.error);
     s.worst = std::max(s.worst, fit.error);
@@ -41,18 +27,14 @@ void fold(ModelSummary& s, const ModelFit& fit) {
 
 }  // namespace
 
-void SweepWorkload::fold_summary(Bytes& summary, WorkItemId id, const Bytes& result) const {
-  if (is_projection(id.stage)) return;
-  auto sum = runtime::summary_as<Summary>(summary);  // value-initialized: best errors start at +inf
-  const auto fits = decode_cell(result, shapes_);
+// The summary starts value-initialized: best errors at +inf.
+void SweepWorkload::fold_cell(Summary& sum, const StageItem& at, const CellFits& fits) const {
   ++sum.cells;
-  ++sum.level_cells[std::min<std::size_t>(schedule_.cell_of(id.stage, id.item).level, summary_levels - 1)];
-  for (std::size_t m = 0; m < fits.size() && m < summary_models; ++m) fold(sum.models[m], fits[m]);
-  runtime::store_summary(summary, sum);
+  ++sum.level_cells[std::min<std::size_t>(schedule_.cell_of(at.step, at.item()).level, summary_levels - 1)];
+  for (std::size_t m = 0; m < fits.size() && m < summary_models; ++m) fold(sum.model[m], fits[m]);
 }
 
-std::string SweepWorkload::headline(const Bytes& summary) const {
-  const auto sum = runtime::summary_as<Summary>(summary);
+std::string SweepWorkload::headline_of(const Summary& sum) const {
   if (sum.cells == 0) return "no cells fitted yet";
   const auto& levels = schedule_.levels();
   std::size_t level = 0;
@@ -62,7 +44,7 @@ std::string SweepWorkload::headline(const Bytes& summary) const {
                      std::to_string(sum.level_cells[level]) + "/" + std::to_string(levels[level].cell_count()) +
                      " cells";
   for (std::size_t m = 0; m < models_.size() && m < summary_models; ++m) {
-    const ModelSummary& s = sum.models[m];
+    const SweepSummary::Model& s = sum.model[m];
     char part[200];
     std::snprintf(part, sizeof part, "; %s error %.3g..%.3g, %.0f evaluations/cell, global search in %.0f%%",
                   models_[m].name.c_str(), s.best, s.worst, double(s.evaluations) / double(sum.cells),

@@ -21,7 +21,8 @@ StartCode code_of(const pbrfit::sweep::CellFitResult& fit, const std::vector<Sta
 }
 
 // The fitting problem with every evaluation checking for a stop, so a long fit gives up promptly.
-pbrfit::sweep::CellProblem cancellable(pbrfit::sweep::CellProblem problem, const runtime::ItemTask& task) {
+template <class Task>
+pbrfit::sweep::CellProblem cancellable(pbrfit::sweep::CellProblem problem, const Task& task) {
   problem.error = [error = std::move(problem.error), &task](std::span<const double> x, double tolerance) {
     if (task.stop_requested()) throw runtime::Cancelled();
     return error(x, tolerance);
@@ -39,66 +40,63 @@ SweepWorkload::SweepWorkload(SweepSettings settings)
     models_.back().parameters = settings_.parameters.at(k);
     shapes_.push_back({models_.back().parameters.size(), models_.back().output_width()});
   }
+  add_stage(runtime::stage<Nothing, WarmStarts, CellFits>("levels", schedule_.stage_count(), this)
+                .items(&SweepWorkload::cell_count)
+                .input(&SweepWorkload::warm_starts)
+                .compute(&SweepWorkload::fit)
+                .check(&SweepWorkload::check_cell)
+                .blocks(&SweepWorkload::cell_blocks)
+                .kept_through(&SweepWorkload::cell_kept_through)
+                .fold(&SweepWorkload::fold_cell));
+  add_stage(runtime::stage<Nothing, LastLevel, Projection>("projections", settings_.projections.empty() ? 0 : 1, this)
+                .items(&SweepWorkload::projection_count)
+                .input(&SweepWorkload::last_level)
+                .compute(&SweepWorkload::project)
+                .check(&SweepWorkload::check_projection)
+                .blocks(&SweepWorkload::projection_blocks));
 }
 
 std::string SweepWorkload::group_name(std::size_t model, std::uint32_t level) const {
   return models_[model].name + "/level" + std::to_string(level);
 }
 
-std::uint32_t SweepWorkload::stage_count() const {
-  return schedule_.stage_count() + (settings_.projections.empty() ? 0 : 1);
-}
-
-std::uint64_t SweepWorkload::item_count(std::uint32_t stage) const {
-  return is_projection(stage) ? settings_.projections.size() : schedule_.stages()[stage].cells.size();
-}
-
-Bytes SweepWorkload::item_input(std::uint32_t stage, std::uint64_t item, const ItemResults& kept) const {
-  if (is_projection(stage)) return projection_input(kept);
-  const CellRef cell = schedule_.cell_of(stage, item);
-  const auto sources = schedule_.sources(cell);
-  ByteWriter out;
-  out.put_varint(sources.size());
-  for (const CellRef& source : sources) {
-    const auto found = kept.find({schedule_.stage_of(source), schedule_.item_of(source)});
-    if (found == kept.end()) throw std::logic_error("sweep: a warm start's fit was not kept");
-    out.put(static_cast<std::uint8_t>(source.level == cell.level ? StartCode::neighbour : StartCode::parent));
-    out.put_bytes(found->second);
+SweepWorkload::WarmStarts SweepWorkload::warm_starts(std::uint32_t step, std::uint64_t item,
+                                                     const runtime::KeptResults& kept) const {
+  const CellRef cell = schedule_.cell_of(step, item);
+  WarmStarts warm;
+  for (const CellRef& source : schedule_.sources(cell)) {
+    warm.codes.push_back(source.level == cell.level ? StartCode::neighbour : StartCode::parent);
+    warm.fits.push_back(kept.at<CellFits>({schedule_.stage_of(source), schedule_.item_of(source)}));
   }
-  return out.take();
+  return warm;
 }
 
-Bytes SweepWorkload::compute(const runtime::ItemTask& task) const {
-  if (is_projection(task.id.stage)) return project(task);
-  const CellRef cell = schedule_.cell_of(task.id.stage, task.id.item);
-  ByteReader input(task.input);
-  std::vector<StartCode> codes;
-  std::vector<std::vector<ModelFit>> sources;
-  for (std::uint64_t n = input.get_varint(); n-- > 0;) {
-    codes.push_back(static_cast<StartCode>(input.get<std::uint8_t>()));
-    sources.push_back(decode_cell(input.get_bytes(), shapes_));
-  }
+CellFits SweepWorkload::fit(const runtime::StageTask<Nothing, WarmStarts>& task) const {
+  const CellRef cell = schedule_.cell_of(task.step(), task.item());
+  const WarmStarts& sources = task.input;
+  if (sources.codes.size() != sources.fits.size()) throw RunError("sweep: warm starts without their start codes");
+  for (const auto& fits : sources.fits) require_shapes(fits, shapes_);
   const auto target = settings_.problem->target(schedule_.levels()[cell.level].coordinates(cell.cell));
-  std::vector<ModelFit> fits;
+  CellFits fits;
   for (std::size_t m = 0; m < models_.size(); ++m) {
     std::vector<pbrfit::sweep::WarmStart> warm;
-    for (const auto& source : sources) warm.push_back({source[m].parameters, source[m].error});
+    for (const auto& source : sources.fits) warm.push_back({source[m].parameters, source[m].error});
     const auto problem = cancellable(target->problem(settings_.models[m], models_[m].parameters), task);
     RandomStream random = task.random(m);
     const auto fit = pbrfit::sweep::fit_cell(problem, warm, settings_.fit, random);
-    fits.push_back({fit.parameters, fit.error, fit.evaluations, code_of(fit, codes), fit.global_ran,
+    fits.push_back({fit.parameters, fit.error, fit.evaluations, code_of(fit, sources.codes), fit.global_ran,
                     target->outputs(settings_.models[m], fit.parameters)});
   }
-  return encode_cell(fits);
+  return fits;
 }
 
-std::vector<store::Block> SweepWorkload::blocks(WorkItemId id, const Bytes& result) const {
-  if (is_projection(id.stage)) return projection_blocks(id, result);
-  const CellRef cell = schedule_.cell_of(id.stage, id.item);
+void SweepWorkload::check_cell(const StageItem&, const CellFits& fits) const { require_shapes(fits, shapes_); }
+
+std::vector<store::Block> SweepWorkload::cell_blocks(const StageItem& item, const CellFits& fits) const {
+  const CellRef cell = schedule_.cell_of(item.step, item.item());
   const auto& grid = schedule_.levels()[cell.level];
   const auto at = grid.indices(cell.cell);
   const std::vector<std::uint64_t> offset(at.begin(), at.end()), ones(at.size(), 1);
-  const auto fits = decode_cell(result, shapes_);
   std::vector<store::Block> out;
   for (std::size_t m = 0; m < models_.size(); ++m) {
     const std::string group = group_name(m, cell.level);
@@ -129,10 +127,9 @@ std::vector<store::Block> SweepWorkload::blocks(WorkItemId id, const Bytes& resu
   return out;
 }
 
-std::uint32_t SweepWorkload::kept_through(WorkItemId id) const {
-  if (is_projection(id.stage)) return id.stage;
-  const CellRef cell = schedule_.cell_of(id.stage, id.item);
-  if (!settings_.projections.empty() && cell.level == final_level()) return schedule_.stage_count();
+std::uint32_t SweepWorkload::cell_kept_through(const StageItem& item) const {
+  const CellRef cell = schedule_.cell_of(item.step, item.item());
+  if (!settings_.projections.empty() && cell.level == final_level()) return first_stage("projections");
   return schedule_.last_reader(cell);
 }
 

@@ -8,6 +8,7 @@
 #include "pbrfit/gp/cost_model.hpp"
 #include "pbrfit/gp/knee.hpp"
 #include "pbrfit/gp/live_code.hpp"
+#include "pbrfit/gp/program_bytes.hpp"
 #include "pbrfit/jobs/symreg/front_measures.hpp"
 #include "pbrfit/jobs/symreg/symreg_workload.hpp"
 
@@ -102,13 +103,23 @@ store::Block recurring_block(const std::vector<std::vector<gp::ArchiveEntry>>& f
 
 }  // namespace
 
-Bytes SymregWorkload::final_fronts(const runtime::ItemTask& task) const {
+// The fronts of the last epoch run (later ones are skipped once every output is solved).
+SymregWorkload::IslandFronts SymregWorkload::island_fronts(std::uint32_t, std::uint64_t,
+                                                           const runtime::KeptResults& kept) const {
+  if (kept.bytes().empty()) throw std::logic_error("symreg: no island epochs were kept for the fronts");
+  const std::uint32_t last = kept.bytes().rbegin()->first.stage;
+  IslandFronts fronts;
+  for (std::uint64_t i = 0; i < island_count(0); ++i) fronts.push_back(kept.at<EpochResult>({last, i}).state.front);
+  return fronts;
+}
+
+SymregWorkload::FrontBlocks SymregWorkload::final_fronts(const runtime::StageTask<Nothing, IslandFronts>& task) const {
   const auto& data = *settings_.data;
+  if (task.input.size() != island_count(0)) throw RunError("symreg: the fronts stage lacks islands");
   std::vector<gp::ParetoArchive> merged;
   for (std::size_t o = 0; o < data.outputs.size(); ++o) merged.emplace_back(options(o).objective_count());
-  ByteReader in(task.input);
-  for (std::uint64_t i = 0; i < item_count(0); ++i)
-    merged[output_of(i)].insert_all(decode_record(in.get_bytes(), input_count(output_of(i))).front);
+  for (std::uint64_t i = 0; i < island_count(0); ++i)
+    merged[output_of(i)].insert_all(gp::archive_from_bytes(task.input[i], input_count(output_of(i))));
   std::vector<std::vector<gp::ArchiveEntry>> fronts;
   std::vector<store::Block> blocks;
   for (std::size_t o = 0; o < data.outputs.size(); ++o) {

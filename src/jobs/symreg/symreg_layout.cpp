@@ -115,8 +115,10 @@ store::ResultLayout SymregWorkload::layout() const {
   return layout;
 }
 
-std::vector<store::Block> SymregWorkload::epoch_blocks(WorkItemId id, const EpochRecord& epoch) const {
+std::vector<store::Block> SymregWorkload::epoch_blocks(const StageItem& at, const EpochResult& result) const {
+  const WorkItemId id = at.id;
   const std::size_t o = output_of(id.item);
+  const EpochRecord epoch = epoch_record(result, input_count(o));
   const SymregOutput& output = settings_.data->outputs[o];
   const std::uint64_t island = id.item - o * settings_.islands;
   store::Block log{output.name, "log", {0}, {1},
@@ -134,8 +136,7 @@ std::vector<store::Block> SymregWorkload::epoch_blocks(WorkItemId id, const Epoc
   return out;
 }
 
-std::vector<store::Block> SymregWorkload::blocks(WorkItemId id, const Bytes& result) const {
-  if (!is_final(id.stage)) return epoch_blocks(id, decode_record(result, input_count(output_of(id.item))));
+std::vector<store::Block> SymregWorkload::front_blocks(const StageItem&, const FrontBlocks& result) const {
   try {
     ByteReader in(result);
     const std::uint64_t count = in.get_varint();

@@ -12,25 +12,16 @@
 namespace pbrfit::jobs::symreg {
 namespace {
 
-constexpr std::size_t summary_outputs = 4;
-constexpr std::size_t cost_buckets = 64;  // cost rounded to an integer, the last bucket holding the rest
-
-struct Summary {
-  std::uint64_t evaluations = 0;
-  std::uint64_t generation = 0;
-  std::uint64_t seen[summary_outputs] = {};  // bit b: bucket b holds an error
-  double best[summary_outputs][cost_buckets] = {};
-};
+constexpr std::size_t summary_outputs = SymregSummary::outputs;
+constexpr std::size_t cost_buckets = SymregSummary::cost_buckets;
 
 std::size_t bucket_of(double cost) { return std::min<std::size_t>(std::size_t(std::max(std::lround(cost), 0L)), cost_buckets - 1); }
 
 }  // namespace
 
-void SymregWorkload::fold_summary(Bytes& summary, WorkItemId id, const Bytes& result) const {
-  if (is_final(id.stage)) return;
-  auto sum = runtime::summary_as<Summary>(summary);
-  const std::size_t o = output_of(id.item);
-  const EpochRecord epoch = decode_record(result, input_count(o));
+void SymregWorkload::fold_epoch(Summary& sum, const StageItem& at, const EpochResult& result) const {
+  const std::size_t o = output_of(at.item());
+  const EpochRecord epoch = epoch_record(result, input_count(o));
   sum.evaluations += epoch.evaluations;
   sum.generation = std::max(sum.generation, epoch.generation);
   if (o < summary_outputs) {
@@ -41,11 +32,9 @@ void SymregWorkload::fold_summary(Bytes& summary, WorkItemId id, const Bytes& re
       sum.seen[o] |= std::uint64_t(1) << b;
     }
   }
-  runtime::store_summary(summary, sum);
 }
 
-std::string SymregWorkload::headline(const Bytes& summary) const {
-  const auto sum = runtime::summary_as<Summary>(summary);
+std::string SymregWorkload::headline_of(const Summary& sum) const {
   if (sum.evaluations == 0) return "no generations yet";
   char text[160];
   std::snprintf(text, sizeof text, "generation %llu, %.3g evaluations", static_cast<unsigned long long>(sum.generation),
@@ -64,10 +53,6 @@ std::string SymregWorkload::headline(const Bytes& summary) const {
     for (std::size_t k = front.size() > 8 ? front.size() - 8 : 0; k < front.size(); ++k) line += front[k];
   }
   return line;
-}
-
-double SymregWorkload::work_done(const Bytes& summary) const {
-  return double(runtime::summary_as<Summary>(summary).evaluations);
 }
 
 }  // namespace pbrfit::jobs::symreg

@@ -7,15 +7,6 @@
 #include "pbrfit/gp/program_bytes.hpp"
 
 namespace pbrfit::jobs::symreg {
-namespace {
-
-const Bytes& kept_result(const ItemResults& kept, WorkItemId id) {
-  const auto found = kept.find(id);
-  if (found == kept.end()) throw std::logic_error("symreg: an island's previous epoch was not kept");
-  return found->second;
-}
-
-}  // namespace
 
 SymregWorkload::SymregWorkload(SymregSettings settings)
     : settings_(std::move(settings)), codec_(store::ResultLayout{}) {
@@ -28,76 +19,86 @@ SymregWorkload::SymregWorkload(SymregSettings settings)
     options_.push_back(options);
   }
   codec_ = store::BlockCodec(layout());
+  add_stage(runtime::stage<Nothing, EpochInput, EpochResult>("epochs", std::uint32_t(settings_.epochs()), this)
+                .items(&SymregWorkload::island_count)
+                .input(&SymregWorkload::epoch_input)
+                .compute(&SymregWorkload::evolve_island)
+                .check(&SymregWorkload::check_epoch)
+                .blocks(&SymregWorkload::epoch_blocks)
+                .kept_through(&SymregWorkload::epoch_kept_through)
+                .fold(&SymregWorkload::fold_epoch));
+  add_stage(runtime::stage<Nothing, IslandFronts, FrontBlocks>("fronts", 1, this)
+                .items(&SymregWorkload::one)
+                .input(&SymregWorkload::island_fronts)
+                .compute(&SymregWorkload::final_fronts)
+                .blocks(&SymregWorkload::front_blocks));
 }
 
-std::uint64_t SymregWorkload::item_count(std::uint32_t stage) const {
-  return is_final(stage) ? 1 : settings_.islands * settings_.data->outputs.size();
+bool SymregWorkload::output_solved(std::uint32_t stage, std::size_t output, const runtime::KeptResults& kept) const {
+  for (std::uint64_t i = output * settings_.islands; i < (output + 1) * settings_.islands; ++i)
+    if (kept.at<EpochResult>({stage, i}).state.reached_target) return true;
+  return false;
 }
 
-Bytes SymregWorkload::item_input(std::uint32_t stage, std::uint64_t item, const ItemResults& kept) const {
-  if (is_final(stage)) {  // the last epoch run (later ones are skipped once every output is solved)
-    if (kept.empty()) throw std::logic_error("symreg: no island epochs were kept for the fronts");
-    const std::uint32_t last = kept.rbegin()->first.stage;
-    ByteWriter out;
-    for (std::uint64_t i = 0; i < item_count(last); ++i) out.put_bytes(kept_result(kept, {last, i}));
-    return out.take();
-  }
-  if (stage == 0) return encode_input(EpochInput{});
+EpochInput SymregWorkload::epoch_input(std::uint32_t step, std::uint64_t item, const runtime::KeptResults& kept) const {
+  EpochInput input;
+  input.migrants = gp::individuals_to_bytes({});
+  if (step == 0) return input;
   const std::size_t output = output_of(item), islands = settings_.islands;
   const std::uint64_t first = output * islands, island = item - first;
   const std::uint64_t before = first + (island + islands - 1) % islands;  // the ring's previous island
-  bool solved = false;
-  for (std::uint64_t i = first; i < first + islands; ++i)
-    solved = solved || reached_target_of(kept_result(kept, {stage - 1, i}));
-  EpochBytes neighbour = split_epoch(kept_result(kept, {stage - 1, before}));
-  if (islands == 1) neighbour.emigrants = gp::individuals_to_bytes({});
-  return next_input(split_epoch(kept_result(kept, {stage - 1, item})), neighbour, solved);
+  input.state = kept.at<EpochResult>({step - 1, item}).state;
+  if (islands > 1) input.migrants = kept.at<EpochResult>({step - 1, before}).emigrants;
+  input.solved = output_solved(step - 1, output, kept);
+  return input;
 }
 
-Bytes SymregWorkload::compute(const runtime::ItemTask& task) const {
-  return is_final(task.id.stage) ? final_fronts(task) : evolve_island(task);
-}
-
-Bytes SymregWorkload::evolve_island(const runtime::ItemTask& task) const {
-  const std::size_t output = output_of(task.id.item);
+EpochResult SymregWorkload::evolve_island(const runtime::StageTask<Nothing, EpochInput>& task) const {
+  const std::size_t output = output_of(task.item());
   const auto& opts = options(output);
-  EpochInput input = decode_input(task.input, input_count(output));
-  IslandEpoch epoch;
-  if (!input.has_state) input.state.population = gp::random_population(opts, task.random(0));
-  if (input.solved || input.state.reached_target) {  // solved: the island keeps its state
-    epoch.state = std::move(input.state);
-    epoch.emigrants = gp::pick_emigrants(epoch.state.population, settings_.migrants, opts);
-    return encode_epoch(epoch);
+  const std::size_t inputs = input_count(output);
+  IslandState state;
+  if (task.input.state) state = decode_state(*task.input.state, inputs);
+  else state.population = gp::random_population(opts, task.random(0));
+  EpochResult epoch;
+  if (task.input.solved || state.reached_target) {  // solved: the island keeps its state
+    epoch.emigrants = gp::individuals_to_bytes(gp::pick_emigrants(state.population, settings_.migrants, opts));
+    epoch.generation = state.population.generation;
+    epoch.state = encode_state(state);
+    return epoch;
   }
-  const std::size_t done = task.id.stage * settings_.migration_interval;
+  const std::size_t done = task.step() * settings_.migration_interval;
   const std::size_t generations = std::min(settings_.migration_interval, settings_.generations - done);
-  gp::EvolveResult evolved = gp::evolve(input.state.population, input.migrants, generations, opts,
+  const auto migrants = gp::individuals_from_bytes(task.input.migrants, inputs);
+  gp::EvolveResult evolved = gp::evolve(state.population, migrants, generations, opts,
                                         settings_.data->outputs[output].train, task.random(1));
   gp::ParetoArchive front(opts.objective_count());
-  front.insert_all(input.state.front);
+  front.insert_all(state.front);
+  std::vector<gp::ArchiveEntry> additions;
   for (const auto& entry : evolved.archive_additions)
-    if (front.insert(entry)) epoch.additions.push_back(entry);
-  epoch.state = {std::move(evolved.population), front.entries(),
-                 input.state.reached_target || evolved.stats.reached_target};
-  epoch.emigrants = gp::pick_emigrants(epoch.state.population, settings_.migrants, opts);
+    if (front.insert(entry)) additions.push_back(entry);
+  const IslandState after{std::move(evolved.population), front.entries(),
+                          state.reached_target || evolved.stats.reached_target};
+  epoch.emigrants = gp::individuals_to_bytes(gp::pick_emigrants(after.population, settings_.migrants, opts));
+  epoch.generation = after.population.generation;
+  epoch.state = encode_state(after);
+  epoch.additions = gp::archive_to_bytes(additions);
   epoch.evaluations = evolved.stats.evaluations;
   epoch.best_error = evolved.stats.best_error;
-  return encode_epoch(epoch);
+  return epoch;
 }
 
-std::uint32_t SymregWorkload::next_stage(std::uint32_t completed, const ItemResults& kept) const {
-  if (is_final(completed) || is_final(completed + 1)) return completed + 1;
-  for (std::size_t o = 0; o < settings_.data->outputs.size(); ++o) {
-    bool solved = false;
-    for (std::uint64_t i = o * settings_.islands; i < (o + 1) * settings_.islands; ++i)
-      solved = solved || reached_target_of(kept_result(kept, {completed, i}));
-    if (!solved) return completed + 1;
-  }
-  return std::uint32_t(settings_.epochs());
+void SymregWorkload::check_epoch(const StageItem& at, const EpochResult& epoch) const {
+  epoch_record(epoch, input_count(output_of(at.item())));  // throws for programs that are not the output's
 }
 
-std::uint32_t SymregWorkload::kept_through(WorkItemId id) const {
-  return is_final(id.stage) ? id.stage : id.stage + 1;
+std::uint32_t SymregWorkload::next_stage(std::uint32_t completed, const ItemResults& results) const {
+  const std::uint32_t fronts = first_stage("fronts");
+  if (completed + 1 >= fronts) return completed + 1;
+  const runtime::KeptResults kept(results);
+  for (std::size_t o = 0; o < settings_.data->outputs.size(); ++o)
+    if (!output_solved(completed, o, kept)) return completed + 1;
+  return fronts;
 }
 
 }  // namespace pbrfit::jobs::symreg

@@ -1,52 +1,59 @@
 #pragma once
-// The genBRDF search (Brady et al., sections 3.2 and 4) as a runtime workload. With G generations:
-//  - stage 2g, breeding: item i < islands breeds island i's next genomes (gp/edit_evolution.hpp) from its
-//    evaluated members of generation g - 1, after the best `migrants` of island i - 1 on the ring replaced
-//    its worst members (every migration_interval generations), and reifies them into trees; generation 0
-//    is one random edit per genome. The last item keeps the Pareto front of error vs tree size: the front
-//    so far merged with generation g - 1;
-//  - stage 2g + 1, evaluation: the distinct trees of generation g (the stage context, in order of first
-//    appearance over the islands' slots), `chunk` per item whatever the islands, so every core works; each
-//    compiled and fitted to every training material and channel (candidate_score.hpp), abandoned once
-//    worse than the worst island median of generation g - 1 (`abandon_poor`; the context's first value).
-//    Items past the distinct trees have nothing to do;
-//  - stage 2G: the last front, whose knee is simplified by culling sub-expressions that do not raise the
-//    error;
-//  - stage 2G + 1 (when evaluating): an item per training then testing material fits the seed and the
-//    chosen front members to it, renders the measured material and every fit and compares the images
-//    (material_evaluation.hpp); stage 2G + 2: one item averages them per material set.
+// The genBRDF search (Brady et al., sections 3.2 and 4) as a runtime workload. Its plan, with G generations:
+//  - a cycle of G generations, each two stages:
+//    - `breed` and `front`: breed item i < islands breeds island i's next genomes (gp/edit_evolution.hpp)
+//      from its evaluated members of the generation before, after the best `migrants` of island i - 1 on
+//      the ring replaced its worst members (every migration_interval generations), and reifies them into
+//      trees; generation 0 is one random edit per genome. The one `front` item keeps the Pareto front of
+//      error vs tree size: the front so far merged with the generation before;
+//    - `evaluate`: the distinct trees of the generation (the stage context, in order of first appearance
+//      over the islands' slots), `chunk` per item whatever the islands, so every core works; each compiled
+//      and fitted to every training material and channel (candidate_score.hpp), abandoned once worse than
+//      the worst island median of the generation before (`abandon_poor`). Items past the distinct trees
+//      have nothing to do;
+//  - `last front`: the front after the last generation, whose knee is simplified by culling
+//    sub-expressions that do not raise the error;
+//  - when evaluating, `materials`: an item per training then testing material fits the seed and the chosen
+//    front members to it, renders the measured material and every fit and compares the images
+//    (material_evaluation.hpp); then `averages`: one item averages them per material set.
 // A result is kept only until the stage that reads it is done.
 //
 // Result layout (docs/results-brdf_search.md): group `brdf` with growing record tables `front`, `archive`
 // (every tree that entered the front), `log` (a row per island and generation) and `simplified`; group
 // `brdf/evaluation` with `materials`, `averages` and the `renders`.
+#include <limits>
 #include <string>
 #include <vector>
 
 #include "pbrfit/jobs/brdf/brdf_search_settings.hpp"
+#include "pbrfit/jobs/brdf/material_evaluation.hpp"
 #include "pbrfit/jobs/brdf/tree_bytes.hpp"
-#include "pbrfit/runtime/workload.hpp"
+#include "pbrfit/runtime/staged_workload.hpp"
 
 namespace pbrfit::jobs::brdf {
 
-struct BreedRecord;  // search_records.hpp
+struct BreedInput;  // search_records.hpp
+struct BreedRecord;
+struct EvaluationContext;
+struct EvaluationRecord;
+struct FrontInput;
 struct FrontRecord;
+struct AverageRow;
 
-class BrdfSearchWorkload final : public runtime::Workload {
+// The running summary (search_summary.cpp): counts, sums and minima, folded in any order.
+struct BrdfSearchSummary {
+  std::uint64_t evaluated = 0;   // genomes
+  std::uint64_t generation = 0;  // highest generation evaluated, plus one
+  double best = std::numeric_limits<double>::infinity();
+  double best_size = 0.0;
+  std::uint64_t materials = 0;  // evaluated after the search
+};
+
+class BrdfSearchWorkload final : public runtime::StagedWorkload<BrdfSearchSummary> {
  public:
   explicit BrdfSearchWorkload(BrdfSearchSettings settings);
 
   store::ResultLayout layout() const override;
-  std::uint32_t stage_count() const override;
-  std::uint64_t item_count(std::uint32_t stage) const override;
-  Bytes stage_context(std::uint32_t stage, const ItemResults& kept) const override;
-  Bytes item_input(std::uint32_t stage, std::uint64_t item, const ItemResults& kept) const override;
-  Bytes compute(const runtime::ItemTask& task) const override;
-  std::vector<store::Block> blocks(WorkItemId id, const Bytes& result) const override;
-  std::uint32_t kept_through(WorkItemId id) const override;
-  void fold_summary(Bytes& summary, WorkItemId id, const Bytes& result) const override;
-  std::string headline(const Bytes& summary) const override;
-  double work_done(const Bytes& summary) const override;
   std::string work_unit() const override { return "fits"; }
 
   // A member of one generation: genome, tree, error and tree size, in slot order of all islands.
@@ -59,13 +66,22 @@ class BrdfSearchWorkload final : public runtime::Workload {
   };
 
  private:
-  enum class Role { breeding, front, evaluation, material, averages };
-  Role role(WorkItemId id) const;
-  std::uint32_t front_stage() const { return std::uint32_t(2 * settings_.generations); }
-  std::uint32_t generation_of(std::uint32_t stage) const { return stage / 2; }
+  using StageItem = runtime::StageItem;
+  template <class Context, class Input>
+  using Task = runtime::StageTask<Context, Input>;
+  using Kept = runtime::KeptResults;
+
   std::size_t members() const { return settings_.islands * settings_.population; }
   std::size_t chunks() const { return (members() + settings_.chunk - 1) / settings_.chunk; }
-  double abandon_threshold(std::uint32_t breeding_stage, const ItemResults& kept) const;
+  std::uint64_t island_count(std::uint32_t) const { return settings_.islands; }
+  std::uint64_t chunk_count(std::uint32_t) const { return chunks(); }
+  std::uint64_t one(std::uint32_t) const { return 1; }
+  std::uint64_t material_count(std::uint32_t) const { return evaluated_materials(); }
+  // Every result of a generation is read by the next generation's first stage (or the last front).
+  std::uint32_t kept_for_next_generation(const StageItem& at) const;
+  std::uint32_t last_front_kept_through(const StageItem& at) const;
+  std::uint32_t next_stage_reads(const StageItem& at) const { return at.id.stage + 1; }
+  double abandon_threshold(std::uint32_t generation, const Kept& kept) const;
   std::size_t evaluated_materials() const;
   std::string evaluated_material(std::uint64_t item) const;  // training, then testing
   std::vector<std::string> model_names() const;
@@ -73,26 +89,49 @@ class BrdfSearchWorkload final : public runtime::Workload {
   // front is empty).
   std::vector<ScoredTree> evaluated_models(const FrontRecord& record) const;
 
-  // The bred members of the generation bred at `breeding_stage`, without errors; and the distinct trees.
-  std::vector<Evaluated> bred_members(std::uint32_t breeding_stage, const ItemResults& kept) const;
-  // The members of the generation bred at breeding_stage - 2, with the errors of their evaluation.
-  std::vector<Evaluated> generation_members(std::uint32_t breeding_stage, const ItemResults& kept) const;
-  Bytes breeding_input(std::uint32_t stage, std::uint64_t island, const ItemResults& kept) const;
-  Bytes front_input(std::uint32_t stage, const ItemResults& kept) const;
-  Bytes material_input(const ItemResults& kept) const;
-  Bytes averages_input(const ItemResults& kept) const;
-  Bytes breed(const runtime::ItemTask& task) const;
+  // The bred members of a generation, without errors (search_generation.cpp).
+  std::vector<Evaluated> bred_members(std::uint32_t generation, const Kept& kept) const;
+  // The members of a generation with the errors of their evaluation.
+  std::vector<Evaluated> generation_members(std::uint32_t generation, const Kept& kept) const;
+  EvaluationContext evaluation_context(std::uint32_t generation, const Kept& kept) const;
+  EvaluationRecord evaluate(const Task<EvaluationContext, Nothing>& task) const;  // brdf_search_workload.cpp
+  void check_evaluation(const StageItem& at, const EvaluationRecord& record) const;
+  std::vector<store::Block> no_blocks(const StageItem&, const EvaluationRecord&) const { return {}; }
+
+  // Breeding (search_breeding.cpp).
+  BreedInput breeding_input(std::uint32_t generation, std::uint64_t island, const Kept& kept) const;
+  BreedRecord breed(const Task<Nothing, BreedInput>& task) const;
+  void check_breed(const StageItem& at, const BreedRecord& record) const;
   BreedRecord& with_trees(BreedRecord& record) const;
-  Bytes evaluate(const runtime::ItemTask& task) const;
-  Bytes keep_front(const runtime::ItemTask& task) const;
-  Bytes evaluate_material(const runtime::ItemTask& task) const;
-  Bytes average(const runtime::ItemTask& task) const;
-  std::vector<store::Block> front_blocks(WorkItemId id, const Bytes& result) const;
-  std::vector<store::Block> evaluation_blocks(WorkItemId id, const Bytes& result) const;
+  std::vector<store::Block> breed_blocks(const StageItem& at, const BreedRecord& record) const;  // search_blocks.cpp
+
+  // The front (search_front.cpp, search_blocks.cpp).
+  FrontInput front_input(std::uint32_t generation, std::uint64_t, const Kept& kept) const;
+  FrontInput last_front_input(std::uint32_t, std::uint64_t, const Kept& kept) const;
+  FrontRecord keep_front(const Task<Nothing, FrontInput>& task) const;
+  FrontRecord keep_last_front(const Task<Nothing, FrontInput>& task) const;
+  std::vector<store::Block> front_blocks(const StageItem& at, const FrontRecord& record) const;
+  std::vector<store::Block> last_front_blocks(const StageItem& at, const FrontRecord& record) const;
+  ScoredTree cull(const ScoredTree& knee, const Task<Nothing, FrontInput>& task) const;
+
+  // The evaluation after the search (search_evaluation.cpp, evaluation_layout.cpp).
+  std::vector<gp::SyntaxTree> material_input(std::uint32_t, std::uint64_t, const Kept& kept) const;
+  MaterialEvaluation evaluate_material(const Task<Nothing, std::vector<gp::SyntaxTree>>& task) const;
+  void check_material(const StageItem& at, const MaterialEvaluation& record) const;
+  std::vector<store::Block> material_blocks(const StageItem& at, const MaterialEvaluation& record) const;
+  std::vector<MaterialEvaluation> averages_input(std::uint32_t, std::uint64_t, const Kept& kept) const;
+  std::vector<AverageRow> average(const Task<Nothing, std::vector<MaterialEvaluation>>& task) const;
+  std::vector<store::Block> averages_blocks(const StageItem& at, const std::vector<AverageRow>& rows) const;
+
+  // The summary (search_summary.cpp).
+  void fold_evaluation(Summary& summary, const StageItem& at, const EvaluationRecord& record) const;
+  void fold_material(Summary& summary, const StageItem& at, const MaterialEvaluation& record) const;
+  std::string headline_of(const Summary& summary) const override;
+  double work_done_in(const Summary& summary) const override;
+
   store::Group evaluation_group() const;
   store::Block models_block(const FrontRecord& record) const;
   std::string expression(const gp::SyntaxTree& tree) const;
-  ScoredTree cull(const ScoredTree& knee, const runtime::ItemTask& task) const;
 
   BrdfSearchSettings settings_;
 };

@@ -27,11 +27,19 @@ struct ModelEvaluation {
   double image_l2 = 0.0;
   double one_minus_ssim = 0.0;
   std::vector<double> parameters;  // 3 channels x 4 parameters
+  template <class Archive>
+  void serialize(Archive& archive) {
+    archive(metric_error, image_l2, one_minus_ssim, parameters);
+  }
 };
 
 struct MaterialEvaluation {
   std::vector<ModelEvaluation> models;
   std::vector<std::uint8_t> renders;
+  template <class Archive>
+  void serialize(Archive& archive) {
+    archive(models, renders);
+  }
 };
 
 MaterialEvaluation evaluate_on_material(const BrdfScene& metric, const BrdfScene& scene,

@@ -14,7 +14,7 @@
 #include "pbrfit/ebrdf/albedo_curve.hpp"
 #include "pbrfit/jobs/ebrdf/ebrdf_items.hpp"
 #include "pbrfit/jobs/ebrdf/ebrdf_settings.hpp"
-#include "pbrfit/runtime/workload.hpp"
+#include "pbrfit/runtime/staged_workload.hpp"
 
 namespace pbrfit::jobs::ebrdf {
 
@@ -22,28 +22,33 @@ inline constexpr std::size_t values_per_fit = 11;  // 9 matrix entries, amplitud
 
 std::string level_group(const ComponentSettings& component, std::size_t level);
 
-class EbrdfWorkload final : public runtime::Workload {
+struct EbrdfSummary {
+  std::uint64_t fits = 0;
+  std::uint64_t error_sum_micro = 0;  // sum of round(1e6 error): an integer, exact in any order
+  double max_error = 0.0;
+};
+
+class EbrdfWorkload final : public runtime::StagedWorkload<EbrdfSummary> {
  public:
   explicit EbrdfWorkload(EbrdfSettings settings);
 
   store::ResultLayout layout() const override;
-  std::uint64_t item_count(std::uint32_t) const override { return items_.count(); }
-  Bytes compute(const runtime::ItemTask& task) const override;
-  std::vector<store::Block> blocks(WorkItemId id, const Bytes& result) const override;
-  void fold_summary(Bytes& summary, WorkItemId id, const Bytes& result) const override;
-  std::string headline(const Bytes& summary) const override;
-  double work_done(const Bytes& summary) const override;
   std::string work_unit() const override { return "fits"; }
 
  private:
-  struct Summary {
-    std::uint64_t fits = 0;
-    std::uint64_t error_sum_micro = 0;  // sum of round(1e6 error): an integer, exact in any order
-    double max_error = 0.0;
-  };
-  // [texel y][texel x][view][values_per_fit], the tile's texels row-major.
-  std::vector<float> fit_tile(const TileItem& tile, const runtime::ItemTask& task) const;
-  std::vector<float> decode(WorkItemId id, const Bytes& result) const;
+  // A tile's fits, [texel y][texel x][view][values_per_fit] with the tile's texels row-major; empty for item 0.
+  using TileFits = std::vector<float>;
+  using Task = runtime::StageTask<Nothing, Nothing>;
+
+  std::uint64_t item_total(std::uint32_t) const { return items_.count(); }
+  TileFits compute_item(const Task& task) const;
+  void check_item(const runtime::StageItem& at, const TileFits& fits) const;
+  std::vector<store::Block> item_blocks(const runtime::StageItem& at, const TileFits& fits) const;
+  void fold_item(Summary& summary, const runtime::StageItem& at, const TileFits& fits) const;
+  std::string headline_of(const Summary& summary) const override;
+  double work_done_in(const Summary& summary) const override { return double(summary.fits); }
+
+  TileFits fit_tile(const TileItem& tile, const Task& task) const;
   std::size_t fits_in(const TileItem& tile) const;
 
   EbrdfSettings settings_;

@@ -11,7 +11,7 @@
 #include "pbrfit/ebrdf/ggx_ltc_curve.hpp"
 #include "pbrfit/ebrdf/plane_renderer.hpp"
 #include "pbrfit/jobs/ebrdf/prefiltered_tables.hpp"
-#include "pbrfit/runtime/workload.hpp"
+#include "pbrfit/runtime/staged_workload.hpp"
 
 namespace pbrfit::jobs::ebrdf {
 
@@ -25,26 +25,32 @@ struct RenderSettings {
   double exposure = 1.0;
 };
 
-class RenderWorkload final : public runtime::Workload {
+struct RenderSummary {
+  std::uint64_t images = 0, ours_better = 0, compared = 0;  // compared: images with >= 2 texels per pixel
+};
+
+class RenderWorkload final : public runtime::StagedWorkload<RenderSummary> {
  public:
   explicit RenderWorkload(RenderSettings settings);
 
   store::ResultLayout layout() const override;
-  std::uint64_t item_count(std::uint32_t) const override { return settings_.scenes.size() * settings_.distances.size(); }
-  Bytes compute(const runtime::ItemTask& task) const override;
-  std::vector<store::Block> blocks(WorkItemId id, const Bytes& result) const override;
-  void fold_summary(Bytes& summary, WorkItemId id, const Bytes& result) const override;
-  std::string headline(const Bytes& summary) const override;
 
  private:
   struct Rendered {
     std::vector<std::uint8_t> display;  // [method][row][column][3]
     double naive_mse = 0.0, ours_mse = 0.0, texels_per_pixel = 0.0;
+    template <class Archive>
+    void serialize(Archive& archive) {
+      archive(display, naive_mse, ours_mse, texels_per_pixel);
+    }
   };
-  struct Summary {
-    std::uint64_t images = 0, ours_better = 0, compared = 0;  // compared: images with >= 2 texels per pixel
-  };
-  Rendered decode(const Bytes& bytes) const;
+
+  std::uint64_t view_count(std::uint32_t) const { return settings_.scenes.size() * settings_.distances.size(); }
+  Rendered render(const runtime::StageTask<Nothing, Nothing>& task) const;
+  void check_render(const runtime::StageItem& at, const Rendered& rendered) const;
+  std::vector<store::Block> render_blocks(const runtime::StageItem& at, const Rendered& rendered) const;
+  void fold_render(Summary& summary, const runtime::StageItem& at, const Rendered& rendered) const;
+  std::string headline_of(const Summary& summary) const override;
 
   RenderSettings settings_;
   pbrfit::ebrdf::GgxLtcCurve base_ltc_;

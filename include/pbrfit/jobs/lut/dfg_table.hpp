@@ -1,5 +1,5 @@
 #pragma once
-// The split-sum DFG table as a workload: one work item per roughness row, each integrating every
+// The split-sum DFG table as a workload of one stage (runtime/staged_workload.hpp): an item per roughness row, each integrating every
 // n.v entry of the row (and, with multiple scattering, the row's Kulla-Conty average albedo; with cloth, the
 // cloth channel of brdf/cloth_albedo.hpp at every entry).
 #include <cstddef>
@@ -9,7 +9,7 @@
 #include "pbrfit/brdf/roughness.hpp"
 #include "pbrfit/integrate/adaptive_cubature.hpp"
 #include "pbrfit/jobs/lut/table_axis.hpp"
-#include "pbrfit/runtime/workload.hpp"
+#include "pbrfit/runtime/staged_workload.hpp"
 
 namespace pbrfit::jobs::lut {
 
@@ -24,33 +24,41 @@ struct DfgSettings {
   integrate::AdaptiveOptions integration;  // per entry
 };
 
-class DfgTable final : public runtime::Workload {
+// What the headline reports, folded row by row.
+struct DfgSummary {
+  double worst_error = 0.0;
+  double evaluations = 0.0;  // a sum of integers: exact in any order below 2^53
+  std::uint64_t entries = 0, above_tolerance = 0;
+};
+
+class DfgTable final : public runtime::StagedWorkload<DfgSummary> {
  public:
   explicit DfgTable(const DfgSettings& settings);
 
   store::ResultLayout layout() const override;
-  std::uint64_t item_count(std::uint32_t) const override { return roughness_.size(); }
-  Bytes compute(const runtime::ItemTask& task) const override;
-  std::vector<store::Block> blocks(WorkItemId id, const Bytes& result) const override;
-  void fold_summary(Bytes& summary, WorkItemId id, const Bytes& result) const override;
-  std::string headline(const Bytes& summary) const override;
 
  private:
-  // A row's result, as computed and as stored in checkpoints.
+  // A row's result, as computed and as stored in checkpoints; the cloth vectors are empty without cloth.
   struct Row {
     std::vector<double> scale, bias, error_estimate, evaluations;
     double average_energy = 0.0;
     double average_energy_error = 0.0;
-    std::vector<double> cloth, cloth_error, cloth_evaluations;  // with cloth only
+    std::vector<double> cloth, cloth_error, cloth_evaluations;
+    template <class Archive>
+    void serialize(Archive& archive) {
+      archive(scale, bias, error_estimate, evaluations, average_energy, average_energy_error, cloth, cloth_error,
+              cloth_evaluations);
+    }
   };
-  // What the headline reports, folded row by row.
-  struct Summary {
-    double worst_error = 0.0;
-    double evaluations = 0.0;  // a sum of integers: exact in any order below 2^53
-    std::uint64_t entries = 0, above_tolerance = 0;
-  };
-  Bytes encode(const Row& row) const;
-  Row decode(const Bytes& bytes) const;
+  using Task = runtime::StageTask<Nothing, Nothing>;
+
+  std::uint64_t row_count(std::uint32_t) const { return roughness_.size(); }
+  Row compute_row(const Task& task) const;
+  void check_row(const runtime::StageItem& at, const Row& row) const;
+  std::vector<store::Block> row_blocks(const runtime::StageItem& at, const Row& row) const;
+  void fold_row(Summary& summary, const runtime::StageItem& at, const Row& row) const;
+  std::string headline_of(const Summary& summary) const override;
+
   double alpha(std::uint64_t row) const;
   // Throws RunError (naming the entry and what to change) when an integral missed the tolerance.
   void require_converged(bool converged, double error, std::size_t evaluations, const std::string& what) const;

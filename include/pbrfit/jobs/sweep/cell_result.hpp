@@ -24,14 +24,22 @@ struct ModelFit {
   bool global_ran = false;
   std::vector<double> outputs;
   bool operator==(const ModelFit&) const = default;
+  template <class Archive>
+  void serialize(Archive& archive) {
+    archive(parameters, error, evaluations, start, global_ran, outputs);
+  }
 };
+
+// A cell's result: a fit per model of the job, in job order.
+using CellFits = std::vector<ModelFit>;
 
 struct FitShape {
   std::size_t parameters = 0;
   std::size_t outputs = 0;
 };
 
-Bytes encode_cell(const std::vector<ModelFit>& fits);
-std::vector<ModelFit> decode_cell(const Bytes& bytes, const std::vector<FitShape>& shapes);
+// Throws RunError unless the fits have the job's models' shapes and known start codes (a result read from a
+// checkpoint or another rank).
+void require_shapes(const CellFits& fits, const std::vector<FitShape>& shapes);
 
 }  // namespace pbrfit::jobs::sweep

@@ -13,43 +13,81 @@
 // `projections`, a last stage has one item per projected axis, whose input is every fit of the last level;
 // it writes `<model>/level<L>_mean_over_<axis>` over the other axes, with each parameter's and the error's
 // mean and standard deviation over the projected axis.
+#include <limits>
 #include <string>
 #include <vector>
 
 #include "pbrfit/jobs/sweep/cell_result.hpp"
 #include "pbrfit/jobs/sweep/sweep_settings.hpp"
-#include "pbrfit/runtime/workload.hpp"
+#include "pbrfit/runtime/staged_workload.hpp"
 
 namespace pbrfit::jobs::sweep {
 
-class SweepWorkload final : public runtime::Workload {
+// The running summary (sweep_summary.cpp): cells done per level; per model the best and worst error, the
+// evaluations and how often the global search ran.
+struct SweepSummary {
+  static constexpr std::size_t models = 8;
+  static constexpr std::size_t levels = 32;
+  struct Model {
+    double best = std::numeric_limits<double>::infinity();
+    double worst = 0.0;
+    std::uint64_t evaluations = 0;
+    std::uint64_t global_runs = 0;
+    std::uint64_t non_finite = 0;
+  };
+  std::uint64_t cells = 0;
+  std::uint64_t level_cells[levels] = {};
+  Model model[models] = {};
+};
+
+class SweepWorkload final : public runtime::StagedWorkload<SweepSummary> {
  public:
   explicit SweepWorkload(SweepSettings settings);
 
   store::ResultLayout layout() const override;
-  std::uint32_t stage_count() const override;
-  std::uint64_t item_count(std::uint32_t stage) const override;
-  Bytes item_input(std::uint32_t stage, std::uint64_t item, const ItemResults& kept) const override;
-  Bytes compute(const runtime::ItemTask& task) const override;
-  std::vector<store::Block> blocks(WorkItemId id, const Bytes& result) const override;
-  std::uint32_t kept_through(WorkItemId id) const override;
-  void fold_summary(Bytes& summary, WorkItemId id, const Bytes& result) const override;
-  std::string headline(const Bytes& summary) const override;
 
   const pbrfit::sweep::SweepSchedule& schedule() const { return schedule_; }
 
  private:
+  // A cell's warm starts: the kept fits of the cells that start it, and whether each is a neighbour or a parent.
+  struct WarmStarts {
+    std::vector<StartCode> codes;
+    std::vector<CellFits> fits;
+    template <class Archive>
+    void serialize(Archive& archive) {
+      archive(codes, fits);
+    }
+  };
+  // A projection's input: every fit of the last level, in flat cell order.
+  using LastLevel = std::vector<CellFits>;
+  // A projection's result: for each model, each projected cell (flat order), each parameter then the error:
+  // mean and standard deviation.
+  using Projection = std::vector<double>;
+  using StageItem = runtime::StageItem;
+
+  // Levels (sweep_workload.cpp): step s of "levels" is stage s of the schedule.
+  std::uint64_t cell_count(std::uint32_t step) const { return schedule_.stages()[step].cells.size(); }
+  WarmStarts warm_starts(std::uint32_t step, std::uint64_t item, const runtime::KeptResults& kept) const;
+  CellFits fit(const runtime::StageTask<Nothing, WarmStarts>& task) const;
+  void check_cell(const StageItem& at, const CellFits& fits) const;
+  std::vector<store::Block> cell_blocks(const StageItem& at, const CellFits& fits) const;
+  std::uint32_t cell_kept_through(const StageItem& at) const;
+  void fold_cell(Summary& summary, const StageItem& at, const CellFits& fits) const;  // sweep_summary.cpp
+  std::string headline_of(const Summary& summary) const override;
+
   std::string group_name(std::size_t model, std::uint32_t level) const;
   store::Group level_group(std::size_t model, std::uint32_t level) const;
-  // Projections (sweep_projection.cpp).
-  bool is_projection(std::uint32_t stage) const { return stage == schedule_.stage_count(); }
   std::uint32_t final_level() const { return std::uint32_t(schedule_.levels().size() - 1); }
+
+  // Projections (sweep_projection.cpp).
+  std::uint64_t projection_count(std::uint32_t) const { return settings_.projections.size(); }
+  LastLevel last_level(std::uint32_t step, std::uint64_t item, const runtime::KeptResults& kept) const;
+  Projection project(const runtime::StageTask<Nothing, LastLevel>& task) const;
+  void check_projection(const StageItem& at, const Projection& values) const;
+  std::vector<store::Block> projection_blocks(const StageItem& at, const Projection& values) const;
   std::string projection_name(std::size_t model, std::size_t projection) const;
   pbrfit::sweep::LevelGrid projected_grid(std::size_t projection) const;
   store::Group projection_group(std::size_t model, std::size_t projection) const;
-  Bytes projection_input(const ItemResults& kept) const;
-  Bytes project(const runtime::ItemTask& task) const;
-  std::vector<store::Block> projection_blocks(WorkItemId id, const Bytes& result) const;
 
   SweepSettings settings_;
   std::vector<ModelInfo> models_;  // the job's models, in job order

@@ -1,13 +1,17 @@
 #pragma once
 // What one island's epoch of a symbolic-regression job carries (the island model of Brady et al., section
 // 3.2, on the runtime): the island's state after the epoch (population and the non-dominated programs it
-// has seen), what entered that front during the epoch (rows of the archive table), and the epoch's counts.
-// The next epoch's input is the state plus the migrants from the island before it on the ring.
+// has seen), its best programs for the next island on the ring, what entered its front during the epoch
+// (rows of the archive table), and the epoch's counts. The next epoch's input is the state plus the
+// migrants from the island before it on the ring.
 //
-// Contract: decode(encode(x)) == x; decoding validates every program against the output's input count and
-// throws RunError (naming what is wrong) for bytes that are not an island epoch.
+// Programs travel in gp's own compact encoding (gp/program_bytes.hpp), which needs the output's input
+// count to be read back and validated; the types below hold them as those bytes (core/serial.hpp sends the
+// rest), so rank 0 hands an island's population on to its next epoch without decoding it. The functions
+// decode them where the input count is known and throw RunError for bytes that are not such programs.
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <vector>
 
 #include "pbrfit/core/bytes.hpp"
@@ -22,49 +26,54 @@ struct IslandState {
   bool reached_target = false;  // the island has reached the job's target error (it then stops evolving)
 };
 
-struct IslandEpoch {
-  IslandState state;
-  std::vector<gp::Individual> emigrants;  // the island's best, for the next island on the ring
-  std::vector<gp::ArchiveEntry> additions;
+// An island's state with its programs encoded.
+struct EncodedState {
+  Bytes population;  // gp::population_to_bytes
+  Bytes front;       // gp::archive_to_bytes
+  bool reached_target = false;
+  template <class Archive>
+  void serialize(Archive& archive) {
+    archive(population, front, reached_target);
+  }
+};
+
+// The result of an island's epoch.
+struct EpochResult {
+  EncodedState state;
+  std::uint64_t generation = 0;  // the island's generations completed
+  Bytes emigrants;               // gp::individuals_to_bytes: the island's best, for the next island on the ring
+  Bytes additions;               // gp::archive_to_bytes: what entered the front in this epoch
   std::uint64_t evaluations = 0;  // spent in this epoch
   double best_error = std::numeric_limits<double>::infinity();
+  template <class Archive>
+  void serialize(Archive& archive) {
+    archive(state, generation, emigrants, additions, evaluations, best_error);
+  }
 };
 
 // An epoch's input: the previous state (none in the first epoch), the migrants, and whether the output
 // has been solved (every island then stops).
 struct EpochInput {
-  bool has_state = false;
-  IslandState state;
-  std::vector<gp::Individual> migrants;
+  std::optional<EncodedState> state;
+  Bytes migrants;  // gp::individuals_to_bytes
   bool solved = false;
+  template <class Archive>
+  void serialize(Archive& archive) {
+    archive(state, migrants, solved);
+  }
 };
 
-Bytes encode_epoch(const IslandEpoch& epoch);
-IslandEpoch decode_epoch(std::span<const std::byte> bytes, std::size_t input_count);
+EncodedState encode_state(const IslandState& state);
+IslandState decode_state(const EncodedState& state, std::size_t input_count);
 
-// What rank 0 reads of an epoch for the result file and the summary, without decoding the population.
+// What rank 0 reads of an epoch for the result file and the summary: its programs, not its population.
 struct EpochRecord {
-  std::uint64_t generation = 0;  // the island's generations completed
+  std::uint64_t generation = 0;
   std::vector<gp::ArchiveEntry> front;
   std::vector<gp::ArchiveEntry> additions;
   std::uint64_t evaluations = 0;
   double best_error = std::numeric_limits<double>::infinity();
 };
-EpochRecord decode_record(std::span<const std::byte> bytes, std::size_t input_count);
-
-// Rank 0 builds the next epoch's inputs without decoding programs: an epoch's bytes start with the
-// island's flag, its emigrants and its state, which the input reuses byte for byte (the worker validates).
-struct EpochBytes {
-  bool reached_target = false;
-  Bytes emigrants;  // individuals_to_bytes
-  Bytes state;      // the state as encode_input writes it
-};
-EpochBytes split_epoch(std::span<const std::byte> bytes);
-// The flag alone (the first byte; false for bytes too short to hold it).
-inline bool reached_target_of(std::span<const std::byte> bytes) { return !bytes.empty() && bytes[0] != std::byte{0}; }
-// The input of an island's next epoch from its own epoch and its ring neighbour's.
-Bytes next_input(const EpochBytes& own, const EpochBytes& neighbour, bool solved);
-Bytes encode_input(const EpochInput& input);
-EpochInput decode_input(std::span<const std::byte> bytes, std::size_t input_count);
+EpochRecord epoch_record(const EpochResult& epoch, std::size_t input_count);
 
 }  // namespace pbrfit::jobs::symreg
