@@ -19,4 +19,17 @@ auto read_at_key(const spec::Section& s, const std::string& key, const std::stri
   }
 }
 
+// The same inside a spec::Keys check: "" once `read` has run, or "names PATH: REASON" for the check to
+// report at its key.
+template <class Read>
+std::string read_named_file(const std::string& path, Read&& read) {
+  try {
+    read();
+    return {};
+  } catch (const InputError& e) {
+    if (e.where().line != 0) throw;
+    return "names " + path + ": " + e.message();
+  }
+}
+
 }  // namespace pbrfit::jobs

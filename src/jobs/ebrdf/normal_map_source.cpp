@@ -4,7 +4,6 @@
 
 #include "pbrfit/core/error.hpp"
 #include "pbrfit/ebrdf/procedural_normal_maps.hpp"
-#include "pbrfit/jobs/read_at_key.hpp"
 #include "pbrfit/store/image_file.hpp"
 
 namespace pbrfit::jobs::ebrdf {
@@ -23,19 +22,19 @@ eb::NormalMap read_normal_map_file(const std::string& path) {
 
 }  // namespace
 
-LoadedNormalMap load_normal_map(const spec::Section& section, std::uint64_t seed) {
-  const std::string& name = section.get_string("normal_map");
+bool is_builtin_normal_map(const std::string& name) {
   const auto& patterns = eb::normal_pattern_names();
-  if (std::find(patterns.begin(), patterns.end(), name) != patterns.end()) {
-    const auto size = std::size_t(section.get_int("size"));
-    if (!eb::is_power_of_two(size)) section.reject("size", "must be a power of two");
-    auto map = eb::procedural_normal_map(eb::normal_pattern_from(name), size, seed);
-    const std::string side = std::to_string(size);
-    return {std::make_shared<const eb::NormalMap>(std::move(map)), name + " (built in, " + side + " x " + side + ")"};
-  }
-  if (section.given("size")) section.reject("size", "applies to the built-in normal maps only");
-  auto map = read_at_key(section, "normal_map", name, [&] { return read_normal_map_file(name); });
-  return {std::make_shared<const eb::NormalMap>(std::move(map)), name};
+  return std::find(patterns.begin(), patterns.end(), name) != patterns.end();
+}
+
+LoadedNormalMap builtin_normal_map(const std::string& name, std::size_t size, std::uint64_t seed) {
+  auto map = eb::procedural_normal_map(eb::normal_pattern_from(name), size, seed);
+  const std::string side = std::to_string(size);
+  return {std::make_shared<const eb::NormalMap>(std::move(map)), name + " (built in, " + side + " x " + side + ")"};
+}
+
+LoadedNormalMap normal_map_file(const std::string& path) {
+  return {std::make_shared<const eb::NormalMap>(read_normal_map_file(path)), path};
 }
 
 }  // namespace pbrfit::jobs::ebrdf

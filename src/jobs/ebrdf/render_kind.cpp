@@ -2,52 +2,72 @@
 
 #include "pbrfit/jobs/ebrdf/render_workload.hpp"
 #include "pbrfit/jobs/read_at_key.hpp"
+#include "pbrfit/spec/keys.hpp"
 
 namespace pbrfit::jobs::ebrdf {
 namespace {
 
 namespace eb = pbrfit::ebrdf;
 
-spec::Schema render_schema() {
-  spec::Schema s("ebrdf_render");
-  s.string("tables", "the result file of a finished ebrdf job (both components)").require();
-  s.string_list("scenes", 1, 2, "top: camera straight above; grazing: a low view facing the light", {"top", "grazing"})
+spec::Keys<RenderSettings> render_keys() {
+  using S = RenderSettings;
+  spec::Keys<S> k("ebrdf_render");
+  k.string("tables", "the result file of a finished ebrdf job (both components)", &S::tables_path).require();
+  k.string_list("scenes", 1, 2, "top: camera straight above; grazing: a low view facing the light",
+                [](S& s, const std::vector<std::string>& names) {
+                  for (const auto& name : names) s.scenes.push_back(name == "top" ? eb::SceneView::top : eb::SceneView::grazing);
+                },
+                {"top", "grazing"})
       .defaults_to(std::vector<std::string>{"top", "grazing"});
-  s.number_list("distances", 1, 32, "camera distances h, the map tiling once per world unit (top view at 128 "
-                                     "pixels: about 0.54 h texels per pixel for a 128-texel map)")
+  k.number_list("distances", 1, 32,
+                "camera distances h, the map tiling once per world unit (top view at 128 pixels: about 0.54 h "
+                "texels per pixel for a 128-texel map)",
+                &S::distances)
       .defaults_to(std::vector<double>{1, 2, 4, 8, 16, 32});
-  s.integer("resolution", "pixels per image side").range(8, 1024).defaults_to(std::int64_t{128});
-  s.integer("min_samples", "ground truth: the fewest samples per pixel side").range(1, 48).defaults_to(std::int64_t{4});
-  s.number("light_radiance", "radiance of the rectangular light").above(0.0).defaults_to(2.5);
-  s.number("specular", "grey colour of the specular component").range(0.0, 1.0).defaults_to(0.3);
-  s.number("diffuse", "grey colour of the diffuse component").range(0.0, 1.0).defaults_to(0.6);
-  s.number("exposure", "factor on the linear radiance before the sRGB display transform").above(0.0).defaults_to(1.0);
-  return s;
+  k.integer("resolution", "pixels per image side", &S::resolution).range(8, 1024).defaults_to(std::int64_t{128});
+  k.integer("min_samples", "ground truth: the fewest samples per pixel side",
+            [](S& s, std::int64_t n) { s.shading.min_samples = std::size_t(n); })
+      .range(1, 48)
+      .defaults_to(std::int64_t{4});
+  k.number("light_radiance", "radiance of the rectangular light", [](S& s, double v) { s.shading.light_radiance = v; })
+      .above(0.0)
+      .defaults_to(2.5);
+  k.number("specular", "grey colour of the specular component", [](S& s, double v) { s.shading.specular = v; })
+      .range(0.0, 1.0)
+      .defaults_to(0.3);
+  k.number("diffuse", "grey colour of the diffuse component", [](S& s, double v) { s.shading.diffuse = v; })
+      .range(0.0, 1.0)
+      .defaults_to(0.6);
+  k.number("exposure", "factor on the linear radiance before the sRGB display transform", &S::exposure)
+      .above(0.0)
+      .defaults_to(1.0);
+  k.check("tables", [](S& s) {
+    return read_named_file(s.tables_path, [&] {
+      s.tables = std::make_shared<const PrefilteredTables>(load_prefiltered_tables(s.tables_path));
+    });
+  });
+  k.check("distances", [](S& s) -> std::string {
+    for (double d : s.distances)
+      if (!(d > 0.0)) return "must all be positive";
+    return "";
+  });
+  return k;
+}
+
+const spec::Keys<RenderSettings>& keys() {
+  static const spec::Keys<RenderSettings> keys = render_keys();
+  return keys;
 }
 
 std::unique_ptr<runtime::Workload> make_render(const spec::JobSpec& job) {
-  const spec::Section& s = job.kind_section;
-  RenderSettings settings;
-  settings.tables_path = s.get_string("tables");
-  settings.tables = std::make_shared<const PrefilteredTables>(
-      read_at_key(s, "tables", settings.tables_path, [&] { return load_prefiltered_tables(settings.tables_path); }));
-  for (const auto& name : s.get_string_list("scenes"))
-    settings.scenes.push_back(name == "top" ? eb::SceneView::top : eb::SceneView::grazing);
-  settings.distances = s.get_number_list("distances");
-  for (double d : settings.distances)
-    if (!(d > 0.0)) s.reject("distances", "must all be positive");
-  settings.resolution = std::size_t(s.get_int("resolution"));
-  settings.shading = {s.get_number("light_radiance"), s.get_number("specular"), s.get_number("diffuse"),
-                      std::size_t(s.get_int("min_samples"))};
-  settings.exposure = s.get_number("exposure");
-  return std::make_unique<RenderWorkload>(std::move(settings));
+  return std::make_unique<RenderWorkload>(keys().read(job.kind_section));
 }
 
 }  // namespace
 
 JobKind ebrdf_render_kind() {
   return {"ebrdf_render", "reference renders of a prefiltered normal map: ground truth, naive and ours (Nahmias 2022)",
-          render_schema(), make_render};
+          keys().schema(), make_render};
 }
 
 }  // namespace pbrfit::jobs::ebrdf

@@ -2,8 +2,6 @@
 
 namespace pbrfit::jobs::lut {
 
-Placement placement_from(const std::string& name) { return name == "edges" ? Placement::edges : Placement::centres; }
-
 std::vector<double> unit_axis(std::size_t count, Placement placement) {
   std::vector<double> values(count);
   for (std::size_t i = 0; i < count; ++i)

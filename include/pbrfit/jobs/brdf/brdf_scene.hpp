@@ -14,7 +14,7 @@
 #include "pbrfit/render/environment_map.hpp"
 #include "pbrfit/render/pruned_light_table.hpp"
 #include "pbrfit/render/sphere_samples.hpp"
-#include "pbrfit/spec/schema.hpp"
+#include "pbrfit/spec/keys.hpp"
 
 namespace pbrfit::jobs::brdf {
 
@@ -24,14 +24,29 @@ struct BrdfScene {
   std::map<std::string, std::string> attributes;
 };
 
+// The job's `scene` section as written.
+struct SceneSection {
+  spec::Located<std::string> environment;  // interior, sky or the path of a .hdr file
+  std::size_t resolution = 48, samples_per_pixel = 4;
+  double keep_share = 0.999;
+};
+const spec::Keys<SceneSection>& scene_keys();
+
+// `resolution` and `samples_per_pixel` with these defaults, filling the members of those names.
+template <class Holder>
+void add_sampling_keys(spec::Keys<Holder>& k, std::int64_t resolution, std::int64_t samples_per_pixel) {
+  k.integer("resolution", "pixels across the sphere's render", &Holder::resolution).range(8, 4096).defaults_to(resolution);
+  k.integer("samples_per_pixel", "light samples per pixel", &Holder::samples_per_pixel)
+      .range(1, 65536)
+      .defaults_to(samples_per_pixel);
+}
+
 // The environment a `scene.environment` value names: "interior", "sky" or the path of a .hdr file
 // (InputError at the key when it cannot be read or decoded).
-render::EnvironmentMap scene_environment(const spec::Section& scene);
-// The scene of `scene` (environment, keep_share) rendered at the resolution and samples of `sampling`
-// (the same section for the search's metric; the `evaluate` section for the finer renders and fits).
-std::shared_ptr<const BrdfScene> build_scene(const spec::Section& scene, const spec::Section& sampling);
-spec::Schema scene_schema();
-// `resolution` and `samples_per_pixel` with these defaults.
-void add_sampling_keys(spec::Schema& s, std::int64_t resolution, std::int64_t samples_per_pixel);
+render::EnvironmentMap scene_environment(const spec::Located<std::string>& environment);
+// The scene of `scene` (environment, keep_share) rendered at `resolution` and `samples_per_pixel` (the
+// scene's own for the search's metric; the `evaluate` section's for the finer renders and fits).
+std::shared_ptr<const BrdfScene> build_scene(const SceneSection& scene, std::size_t resolution,
+                                             std::size_t samples_per_pixel);
 
 }  // namespace pbrfit::jobs::brdf

@@ -9,7 +9,7 @@
 namespace pbrfit::jobs::brdf {
 
 JobKind brdf_search_kind();
-spec::Schema brdf_search_schema();
+const spec::Schema& brdf_search_schema();
 // Loads the materials and builds the scene. Throws InputError at the offending key for inconsistent
 // settings, unknown materials or unreadable data.
 BrdfSearchSettings brdf_search_settings(const spec::Section& section);

@@ -6,6 +6,5 @@
 namespace pbrfit::jobs::ebrdf {
 
 JobKind ebrdf_kind();
-spec::Schema ebrdf_schema();
 
 }  // namespace pbrfit::jobs::ebrdf

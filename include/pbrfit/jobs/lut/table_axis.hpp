@@ -7,7 +7,6 @@ namespace pbrfit::jobs::lut {
 
 enum class Placement { centres, edges };
 
-Placement placement_from(const std::string& name);
 std::vector<double> unit_axis(std::size_t count, Placement placement);
 
 }  // namespace pbrfit::jobs::lut

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "pbrfit/gp/dataset.hpp"
-#include "pbrfit/spec/schema.hpp"
+#include "pbrfit/spec/keys.hpp"
 
 namespace pbrfit::jobs::symreg {
 
@@ -26,10 +26,20 @@ struct SymregData {
   std::string source;  // where the data came from, for the result's attributes
 };
 
-// From the job's `dataset` section: exactly one of `generator`, `csv` or `result`. Throws InputError at
-// the offending key, naming the data file and, for CSV, the line and column of a bad value.
-std::shared_ptr<const SymregData> load_symreg_data(const spec::Section& dataset);
+// The job's `dataset` section as written: exactly one of `generator`, `csv` or `result` is to be given.
+struct DatasetSection {
+  spec::Located<std::string> generator, csv, result;
+  std::size_t points = 20, test_points = 10'000;
+  std::uint64_t sample_seed = 0;
+  spec::Located<std::vector<std::string>> inputs, targets, tables;
+  spec::Located<bool> cross_inputs;
+};
 
-spec::Schema dataset_schema();
+// Its keys (docs/job-files.md, kind `symreg`, `dataset`).
+const spec::Keys<DatasetSection>& dataset_keys();
+
+// The data the section names; `where` is the section's position. Throws InputError at the offending key,
+// naming the data file and, for CSV, the line and column of a bad value.
+std::shared_ptr<const SymregData> load_symreg_data(const DatasetSection& dataset, const SourcePosition& where);
 
 }  // namespace pbrfit::jobs::symreg

@@ -8,7 +8,7 @@
 namespace pbrfit::jobs::symreg {
 
 JobKind symreg_kind();
-spec::Schema symreg_schema();
+const spec::Schema& symreg_schema();
 // Throws InputError at the offending key for inconsistent settings or unreadable data.
 SymregSettings symreg_settings(const spec::Section& symreg);
 
