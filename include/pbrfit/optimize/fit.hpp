@@ -24,7 +24,7 @@
 
 #include "pbrfit/core/random_stream.hpp"
 #include "pbrfit/optimize/bounds.hpp"
-#include "pbrfit/optimize/de_options.hpp"
+#include "pbrfit/optimize/differential_evolution.hpp"
 #include "pbrfit/optimize/nelder_mead_options.hpp"
 #include "pbrfit/optimize/objective.hpp"
 #include "pbrfit/optimize/stop_reason.hpp"

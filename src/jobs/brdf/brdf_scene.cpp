@@ -2,7 +2,7 @@
 
 #include <cstdio>
 
-#include "pbrfit/jobs/read_at_key.hpp"
+#include "pbrfit/jobs/read_named_file.hpp"
 #include "pbrfit/render/procedural_environments.hpp"
 #include "pbrfit/render/radiance_hdr.hpp"
 #include "pbrfit/store/atomic_file.hpp"

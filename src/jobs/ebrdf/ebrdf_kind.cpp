@@ -8,7 +8,7 @@
 #include "pbrfit/ebrdf/footprint_samples.hpp"
 #include "pbrfit/jobs/ebrdf/ebrdf_workload.hpp"
 #include "pbrfit/jobs/ebrdf/normal_map_source.hpp"
-#include "pbrfit/jobs/read_at_key.hpp"
+#include "pbrfit/jobs/read_named_file.hpp"
 #include "pbrfit/spec/keys.hpp"
 
 namespace pbrfit::jobs::ebrdf {

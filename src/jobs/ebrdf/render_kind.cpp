@@ -1,7 +1,7 @@
 #include "pbrfit/jobs/ebrdf/render_kind.hpp"
 
 #include "pbrfit/jobs/ebrdf/render_workload.hpp"
-#include "pbrfit/jobs/read_at_key.hpp"
+#include "pbrfit/jobs/read_named_file.hpp"
 #include "pbrfit/spec/keys.hpp"
 
 namespace pbrfit::jobs::ebrdf {

@@ -5,7 +5,7 @@
 
 #include "pbrfit/core/error.hpp"
 #include "pbrfit/gp/benchmark_problems.hpp"
-#include "pbrfit/jobs/read_at_key.hpp"
+#include "pbrfit/jobs/read_named_file.hpp"
 #include "pbrfit/jobs/symreg/csv_table.hpp"
 #include "pbrfit/jobs/symreg/result_table_source.hpp"
 #include "pbrfit/jobs/symreg/symreg_data.hpp"
