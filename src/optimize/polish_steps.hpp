@@ -6,7 +6,7 @@
 
 #include "pbrfit/optimize/bounds.hpp"
 #include "pbrfit/optimize/candidate.hpp"
-#include "pbrfit/optimize/nelder_mead_options.hpp"
+#include "pbrfit/optimize/nelder_mead.hpp"
 
 namespace pbrfit::optimize::detail {
 

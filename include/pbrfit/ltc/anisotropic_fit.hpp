@@ -14,7 +14,7 @@
 #include <span>
 
 #include "pbrfit/geometry/vector.hpp"
-#include "pbrfit/optimize/nelder_mead_options.hpp"
+#include "pbrfit/optimize/nelder_mead.hpp"
 #include "pbrfit/optimize/stop_reason.hpp"
 
 namespace pbrfit::ltc {

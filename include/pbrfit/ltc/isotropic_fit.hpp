@@ -22,7 +22,7 @@
 #include "pbrfit/ltc/isotropic_parameters.hpp"
 #include "pbrfit/ltc/shader_form.hpp"
 #include "pbrfit/geometry/vector.hpp"
-#include "pbrfit/optimize/nelder_mead_options.hpp"
+#include "pbrfit/optimize/nelder_mead.hpp"
 #include "pbrfit/optimize/stop_reason.hpp"
 
 namespace pbrfit::ltc {

@@ -25,7 +25,7 @@
 #include "pbrfit/core/random_stream.hpp"
 #include "pbrfit/optimize/bounds.hpp"
 #include "pbrfit/optimize/differential_evolution.hpp"
-#include "pbrfit/optimize/nelder_mead_options.hpp"
+#include "pbrfit/optimize/nelder_mead.hpp"
 #include "pbrfit/optimize/objective.hpp"
 #include "pbrfit/optimize/stop_reason.hpp"
 #include "pbrfit/optimize/tolerance_schedule.hpp"

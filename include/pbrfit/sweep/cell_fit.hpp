@@ -23,7 +23,7 @@
 
 #include "pbrfit/core/random_stream.hpp"
 #include "pbrfit/optimize/fit.hpp"
-#include "pbrfit/optimize/nelder_mead_options.hpp"
+#include "pbrfit/optimize/nelder_mead.hpp"
 #include "pbrfit/optimize/parameter_space.hpp"
 
 namespace pbrfit::sweep {

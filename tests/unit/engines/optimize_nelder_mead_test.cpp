@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "pbrfit/optimize/nelder_mead.hpp"
-#include "pbrfit/optimize/starting_simplex.hpp"
+#include "pbrfit/optimize/nelder_mead.hpp"
 #include "pbrfit/optimize/test_functions.hpp"
 
 using namespace pbrfit::optimize;
