@@ -1,4 +1,4 @@
-#include "pbrfit/gp/crossover.hpp"
+#include "pbrfit/gp/variation.hpp"
 
 #include <algorithm>
 #include <array>

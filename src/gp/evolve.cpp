@@ -4,8 +4,7 @@
 #include <numeric>
 
 #include "island_run.hpp"
-#include "pbrfit/gp/random_program.hpp"
-#include "pbrfit/gp/tournament.hpp"
+#include "pbrfit/gp/variation.hpp"
 
 namespace pbrfit::gp {
 

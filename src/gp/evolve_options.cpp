@@ -1,4 +1,4 @@
-#include "pbrfit/gp/evolve_options.hpp"
+#include "pbrfit/gp/evolve.hpp"
 
 #include <stdexcept>
 

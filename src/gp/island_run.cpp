@@ -4,10 +4,7 @@
 #include <stdexcept>
 
 #include "pbrfit/gp/constant_fitting.hpp"
-#include "pbrfit/gp/crossover.hpp"
-#include "pbrfit/gp/mutation.hpp"
-#include "pbrfit/gp/random_program.hpp"
-#include "pbrfit/gp/tournament.hpp"
+#include "pbrfit/gp/variation.hpp"
 
 namespace pbrfit::gp::detail {
 namespace {

@@ -1,4 +1,4 @@
-#include "pbrfit/gp/mutation.hpp"
+#include "pbrfit/gp/variation.hpp"
 
 #include <algorithm>
 #include <array>
@@ -6,7 +6,6 @@
 #include <vector>
 
 #include "pbrfit/gp/live_code.hpp"
-#include "pbrfit/gp/random_program.hpp"
 #include "program_edit.hpp"
 #include "random_draws.hpp"
 

@@ -1,4 +1,4 @@
-#include "pbrfit/gp/random_program.hpp"
+#include "pbrfit/gp/variation.hpp"
 
 namespace pbrfit::gp {
 

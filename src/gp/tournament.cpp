@@ -1,4 +1,4 @@
-#include "pbrfit/gp/tournament.hpp"
+#include "pbrfit/gp/variation.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
 #pragma once
 // An island's population: programs with their fitness and birth generation, the island's generation
 // counter (it carries over from one epoch to the next, so generations are numbered across epochs) and
-// how long its best error has stalled (for restarts, evolve_options.hpp).
+// how long its best error has stalled (for restarts, evolve.hpp).
 //
 // Invariant: every program is valid for the run's inputs; a fitness with evaluated == false is computed
 // by evolve() before anything reads it.

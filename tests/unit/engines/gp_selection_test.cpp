@@ -8,7 +8,7 @@
 #include "pbrfit/gp/knee.hpp"
 #include "pbrfit/gp/pareto_archive.hpp"
 #include "pbrfit/gp/pareto_ranking.hpp"
-#include "pbrfit/gp/tournament.hpp"
+#include "pbrfit/gp/variation.hpp"
 
 using namespace pbrfit::gp;
 using pbrfit::RandomStream;

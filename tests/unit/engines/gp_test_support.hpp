@@ -8,7 +8,7 @@
 #include "pbrfit/core/random_stream.hpp"
 #include "pbrfit/gp/dataset.hpp"
 #include "pbrfit/gp/program_shape.hpp"
-#include "pbrfit/gp/random_program.hpp"
+#include "pbrfit/gp/variation.hpp"
 
 namespace gp_test {
 

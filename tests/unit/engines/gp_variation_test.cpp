@@ -5,9 +5,8 @@
 
 #include "gp_test_support.hpp"
 #include "pbrfit/gp/cost_model.hpp"
-#include "pbrfit/gp/crossover.hpp"
+#include "pbrfit/gp/variation.hpp"
 #include "pbrfit/gp/live_code.hpp"
-#include "pbrfit/gp/mutation.hpp"
 #include "pbrfit/gp/program_builder.hpp"
 #include "pbrfit/gp/tree_walker.hpp"
 

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "pbrfit/gp/evolve_options.hpp"
+#include "pbrfit/gp/evolve.hpp"
 #include "pbrfit/gp/program.hpp"
 #include "pbrfit/jobs/symreg/symreg_data.hpp"
 
