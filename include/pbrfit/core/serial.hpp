@@ -11,6 +11,7 @@
 // consume the whole buffer: a short, long or implausible buffer throws ByteFormatError.
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <type_traits>
@@ -108,7 +109,8 @@ struct Serial<std::vector<T, A>> {
   static std::vector<T, A> read(SerialReader& r) {
     if constexpr (serial_detail::is_plain<T> || std::is_same_v<T, std::byte>) {
       auto values = r.bytes().get_array<T>();
-      return {values.begin(), values.end()};
+      if constexpr (std::is_same_v<A, std::allocator<T>>) return values;  // no second copy
+      else return {values.begin(), values.end()};
     } else {
       const auto count = r.bytes().get<std::uint64_t>();
       // Every element takes at least one byte: a count beyond the data is a corrupt buffer, not an allocation.

@@ -80,7 +80,6 @@ class KeptResults {
  public:
   explicit KeptResults(const ItemResults& kept, const StageLocator* plan = nullptr) : kept_(kept), plan_(plan) {}
 
-  bool contains(WorkItemId id) const { return kept_.count(id) != 0; }
   template <class Result>
   Result at(WorkItemId id) const {
     const auto found = kept_.find(id);
@@ -94,14 +93,6 @@ class KeptResults {
   Result at(std::string_view part, std::uint32_t step, std::uint64_t index) const {
     if (!plan_) throw std::logic_error("kept results read by part without a plan");
     return at<Result>(plan_->locate(part, step, index));
-  }
-  // Every kept result of one stage, in item order.
-  template <class Result>
-  std::vector<std::pair<std::uint64_t, Result>> of_stage(std::uint32_t stage) const {
-    std::vector<std::pair<std::uint64_t, Result>> out;
-    for (auto it = kept_.lower_bound({stage, 0}); it != kept_.end() && it->first.stage == stage; ++it)
-      out.emplace_back(it->first.item, from_bytes<Result>(it->second));
-    return out;
   }
   const ItemResults& bytes() const { return kept_; }
 

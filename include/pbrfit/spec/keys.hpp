@@ -27,8 +27,7 @@
 // std::vector of them for a section list). A key without a value (optional, no default, left out) fills
 // nothing. Checks run after every key is filled, in the order declared, and may complete the settings
 // (load a file a key names); a non-empty message refuses the job at the check's key ("'KEY' MESSAGE",
-// FILE:LINE:COL), or for a section check at the section ("MESSAGE"); an InputError a check throws (a
-// problem inside a file) passes through. Declaring a check for a key the schema lacks, or a key twice, throws std::logic_error.
+// FILE:LINE:COL); an InputError a check throws (a problem inside a file) passes through. Declaring a check for a key the schema lacks, or a key twice, throws std::logic_error.
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -101,8 +100,6 @@ M converted(const V& value) {
 template <class Settings>
 class Keys {
  public:
-  using Check = std::function<std::string(Settings&)>;
-
   explicit Keys(std::string name) : schema_(std::move(name)) {}
 
   template <class Into>
@@ -197,11 +194,6 @@ class Keys {
                            return std::string(rule(s));
                        }});
   }
-  // A rule over the section as a whole: a non-empty message refuses the job at the section's position.
-  void check_section(Check rule) {
-    checks_.push_back({{}, [rule = std::move(rule)](Settings& s, const Section&, const std::string&) { return rule(s); }});
-  }
-
   const Schema& schema() const { return schema_; }
 
   // The settings a validated section describes, starting from `settings`.
@@ -209,9 +201,7 @@ class Keys {
     for (const auto& [key, filler] : fillers_) filler(settings, section, key);
     for (const auto& [key, rule] : checks_) {
       const std::string message = rule(settings, section, key);
-      if (message.empty()) continue;
-      if (key.empty()) throw InputError(section.position(), message);
-      section.reject(key, message);
+      if (!message.empty()) section.reject(key, message);
     }
     return settings;
   }
@@ -271,7 +261,7 @@ class Keys {
 
   Schema schema_;
   std::vector<std::pair<std::string, Filler>> fillers_;
-  std::vector<std::pair<std::string, Rule>> checks_;  // an empty key: the section's own
+  std::vector<std::pair<std::string, Rule>> checks_;
 };
 
 }  // namespace pbrfit::spec

@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <optional>
 #include <stdexcept>
 
 #include "pbrfit/gp/expression_parser.hpp"
@@ -42,12 +43,12 @@ gp::EditGrammar grammar_of(const BrdfSearchSection& s, const gp::SyntaxTree& see
   return g;
 }
 
-// The class's lists unless the job gives its own (which `custom` requires).
-std::vector<std::string> materials_of(const BrdfSearchSection& s, const spec::Located<std::vector<std::string>>& list) {
-  const auto set = material_set(s.materials);
+// The job's list, else the class's (`custom` has none, so it needs the job's).
+std::vector<std::string> materials_of(const spec::Located<std::vector<std::string>>& list,
+                                      const std::optional<MaterialSet>& set, std::vector<std::string> MaterialSet::*of) {
   if (list.written) return list.value;
   if (!set) list.reject("is needed when 'materials' is custom");
-  return &list == &s.training ? set->training : set->testing;
+  return (*set).*of;
 }
 
 void check_readable(const spec::Located<std::vector<std::string>>& list, const std::vector<std::string>& names,
@@ -74,8 +75,9 @@ EvaluationSettings evaluation_of(const BrdfSearchSection& s, const MaterialSourc
   EvaluationSettings out;
   out.references = references_of(s);
   out.enabled = e.enabled;
-  out.training = materials_of(s, s.training);
-  out.testing = materials_of(s, s.testing);
+  const auto set = material_set(s.materials);
+  out.training = materials_of(s.training, set, &MaterialSet::training);
+  out.testing = materials_of(s.testing, set, &MaterialSet::testing);
   out.source = source;
   out.members = e.members;
   out.comparable_size = e.comparable_size;

@@ -100,7 +100,7 @@ class Toy final : public runtime::StagedWorkload<CountSummary> {
   }
   Totals total_context(std::uint32_t, const runtime::KeptResults& kept) const {
     Totals t;
-    for (const auto& [item, g] : kept.of_stage<Grown>(1)) t.values.push_back(g.value);
+    for (std::uint64_t item = 0; item < 3; ++item) t.values.push_back(kept.at<Grown>("grow", 1, item).value);
     return t;
   }
   std::uint64_t total(const runtime::StageTask<Totals, Nothing>& task) const {

@@ -67,7 +67,6 @@ spec::Keys<Demo> demo_keys() {
     if (d.label == std::optional<std::string>("bad column")) throw InputError(where, "the file has no such column");
     return "";
   });
-  k.check_section([](Demo& d) -> std::string { return d.count == 13 ? "is unlucky as a whole" : ""; });
   return k;
 }
 
@@ -132,9 +131,8 @@ TEST_CASE("a check refuses the job at its key, nested checks at theirs") {
   CHECK(refusal("  ranges: [{low: 5}]\n") == "job.yaml:4:12: error: 'high' must be at least 'low'");  // defaulted: the mapping's position
 }
 
-TEST_CASE("a check may report at its key's position itself, and a section check at the section") {
+TEST_CASE("a check may report at its key's position itself") {
   CHECK(refusal("  label: bad column\n") == "job.yaml:4:10: error: the file has no such column");
-  CHECK(refusal("  count: 13\n") == "job.yaml:4:3: error: is unlucky as a whole");
 }
 
 TEST_CASE("a check naming no key of the schema is refused when it is declared") {
