@@ -7,18 +7,21 @@
 
 namespace pbrfit::optimize {
 
-void validate(const Parameter& parameter) {
+std::string invalid_reason(const Parameter& parameter) {
   const double lower = parameter.lower;
   const double upper = parameter.upper;
-  if (!std::isfinite(lower) || !std::isfinite(upper) || lower > upper) {
-    throw std::invalid_argument("optimize: parameter '" + parameter.name + "' needs finite bounds, lower <= upper");
-  }
-  if (parameter.transform == Transform::log && !(lower > 0.0)) {
-    throw std::invalid_argument("optimize: log parameter '" + parameter.name + "' needs lower > 0");
-  }
-  if (parameter.transform == Transform::cosine && (lower < 0.0 || upper > std::numbers::pi)) {
-    throw std::invalid_argument("optimize: angle parameter '" + parameter.name + "' must lie in [0, pi]");
-  }
+  if (!std::isfinite(lower) || !std::isfinite(upper) || lower > upper)
+    return "parameter '" + parameter.name + "' needs finite bounds, lower <= upper";
+  if (parameter.transform == Transform::log && !(lower > 0.0))
+    return "log parameter '" + parameter.name + "' needs lower > 0";
+  if (parameter.transform == Transform::cosine && (lower < 0.0 || upper > std::numbers::pi))
+    return "angle parameter '" + parameter.name + "' must lie in [0, pi]";
+  return "";
+}
+
+void validate(const Parameter& parameter) {
+  if (const std::string reason = invalid_reason(parameter); !reason.empty())
+    throw std::invalid_argument("optimize: " + reason);
 }
 
 double to_internal(const Parameter& parameter, double value) {

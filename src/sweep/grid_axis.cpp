@@ -25,16 +25,19 @@ GridAxis GridAxis::with_count(std::size_t new_count) const {
   return axis;
 }
 
-void validate(const GridAxis& axis) {
-  const auto fail = [&](const std::string& why) {
-    throw std::invalid_argument("sweep: axis '" + axis.name + "' " + why);
-  };
-  if (!std::isfinite(axis.lower) || !std::isfinite(axis.upper)) fail("has a non-finite bound");
-  if (axis.count == 0) fail("has no samples");
-  if (axis.lower > axis.upper) fail("has lower > upper");
-  if (axis.lower == axis.upper && axis.count != 1) fail("is a single value but has several samples");
+std::string invalid_reason(const GridAxis& axis) {
+  const std::string name = "axis '" + axis.name + "' ";
+  if (!std::isfinite(axis.lower) || !std::isfinite(axis.upper)) return name + "has a non-finite bound";
+  if (axis.count == 0) return name + "has no samples";
+  if (axis.lower > axis.upper) return name + "has lower > upper";
+  if (axis.lower == axis.upper && axis.count != 1) return name + "is a single value but has several samples";
   if (axis.lower < axis.upper && axis.placement == Placement::edges && axis.count < 2)
-    fail("needs at least 2 samples at cell edges");
+    return name + "needs at least 2 samples at cell edges";
+  return "";
+}
+
+void validate(const GridAxis& axis) {
+  if (const std::string reason = invalid_reason(axis); !reason.empty()) throw std::invalid_argument("sweep: " + reason);
 }
 
 }  // namespace pbrfit::sweep

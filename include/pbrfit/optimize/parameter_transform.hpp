@@ -22,7 +22,10 @@ struct Parameter {
   Transform transform = Transform::linear;
 };
 
-// Throws std::invalid_argument for non-finite or inverted bounds, or bounds outside the transform's domain.
+// Why the parameter cannot be searched ("parameter 'x' needs ..."): non-finite or inverted bounds, or bounds
+// outside the transform's domain; empty when it can.
+std::string invalid_reason(const Parameter& parameter);
+// Throws std::invalid_argument("optimize: " + the reason) when there is one.
 void validate(const Parameter& parameter);
 
 double to_internal(const Parameter& parameter, double value);

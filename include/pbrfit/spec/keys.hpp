@@ -22,6 +22,8 @@
 //    for checks that refuse the job at a key of a nested section (located.reject("must ...")) once the
 //    settings around it are known;
 //  - a callable (Settings&, const Value&), for a key that fills several members or a nested engine option.
+// Besides, keys.list_written(&Settings::written) lists the keys the file wrote (WrittenKey: name, position),
+// for a section whose keys are read by some users and refused by others (a sweep's `objective`).
 // Value is the key's C++ type: bool, std::int64_t, double, std::string (string), the choice's bound type,
 // std::vector of std::int64_t, double or std::string; a nested Keys' settings type for a section (or
 // std::vector of them for a section list). A key without a value (optional, no default, left out) fills
@@ -57,6 +59,13 @@ struct Located {
   std::string key;
   SourcePosition where;
   // Throws InputError "'KEY' MESSAGE" at the key's position (as Section::reject does).
+  [[noreturn]] void reject(const std::string& message) const { throw InputError(where, "'" + key + "' " + message); }
+};
+
+// A key the job file wrote, and where.
+struct WrittenKey {
+  std::string key;
+  SourcePosition where;
   [[noreturn]] void reject(const std::string& message) const { throw InputError(where, "'" + key + "' " + message); }
 };
 
@@ -194,11 +203,16 @@ class Keys {
                            return std::string(rule(s));
                        }});
   }
+  // Fills `into` with the keys the section writes, in the schema's order.
+  void list_written(std::vector<WrittenKey> Settings::*into) { written_ = into; }
   const Schema& schema() const { return schema_; }
 
   // The settings a validated section describes, starting from `settings`.
   Settings read(const Section& section, Settings settings = {}) const {
     for (const auto& [key, filler] : fillers_) filler(settings, section, key);
+    if (written_)
+      for (const Field& field : schema_.fields())
+        if (section.given(field.name)) (settings.*written_).push_back({field.name, section.position(field.name)});
     for (const auto& [key, rule] : checks_) {
       const std::string message = rule(settings, section, key);
       if (!message.empty()) section.reject(key, message);
@@ -262,6 +276,7 @@ class Keys {
   Schema schema_;
   std::vector<std::pair<std::string, Filler>> fillers_;
   std::vector<std::pair<std::string, Rule>> checks_;
+  std::vector<WrittenKey> Settings::*written_ = nullptr;
 };
 
 }  // namespace pbrfit::spec

@@ -25,7 +25,9 @@ struct GridAxis {
   GridAxis with_count(std::size_t new_count) const;
 };
 
-// Throws std::invalid_argument, naming the axis, when an invariant does not hold.
+// Why the axis cannot be sampled ("axis 'x' has ..."), empty when every invariant holds.
+std::string invalid_reason(const GridAxis& axis);
+// Throws std::invalid_argument("sweep: " + the reason) when there is one.
 void validate(const GridAxis& axis);
 
 }  // namespace pbrfit::sweep

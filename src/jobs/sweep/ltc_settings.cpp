@@ -17,7 +17,6 @@
 #include "pbrfit/jobs/brdf/material_sets.hpp"
 #include "pbrfit/jobs/brdf/material_source.hpp"
 #include "pbrfit/jobs/sweep/ltc_problem.hpp"
-#include "pbrfit/jobs/sweep/objective_keys.hpp"
 #include "pbrfit/jobs/sweep/problem_catalogue.hpp"
 #include "pbrfit/ltc/point_sets.hpp"
 #include "pbrfit/store/atomic_file.hpp"
@@ -45,14 +44,14 @@ std::shared_ptr<const ltc::PublishedLtcTable> published_ltc_table() {
   return table;
 }
 
-LtcProblemSettings objective_settings(const spec::Section& objective) {
+LtcProblemSettings objective_settings(const ObjectiveKeys& objective) {
   LtcProblemSettings s;
-  s.objective_points = count_or(objective, "samples", s.objective_points);
-  s.metric_points = count_or(objective, "judge_samples", s.metric_points);
-  s.polygon_quads = count_or(objective, "polygon_quads", s.polygon_quads);
-  if (objective.given("polygon_tolerance")) s.polygon.relative_tolerance = objective.get_number("polygon_tolerance");
-  if (objective.given("fit_to") && objective.get_string("fit_to") == "lights") {
-    if (s.polygon_quads == 0) objective.reject("fit_to", "is 'lights', which needs 'polygon_quads' > 0 to judge the fit");
+  s.objective_points = objective.samples.value_or(s.objective_points);
+  s.metric_points = objective.judge_samples.value_or(s.metric_points);
+  s.polygon_quads = objective.polygon_quads.value_or(s.polygon_quads);
+  s.polygon.relative_tolerance = objective.polygon_tolerance.value_or(s.polygon.relative_tolerance);
+  if (objective.fit_to_lights.value) {
+    if (s.polygon_quads == 0) objective.fit_to_lights.reject("is 'lights', which needs 'polygon_quads' > 0 to judge the fit");
     s.fit_to = LtcProblemSettings::FitTo::lights;
   }
   return s;
@@ -107,42 +106,42 @@ struct ExpressionBrdf {
 };
 
 // The expression's axes besides the view: the roughness, then those the job adds (each with from, to, count).
-std::vector<ProblemAxis> further_axes(const spec::Section& sweep) {
+std::vector<ProblemAxis> further_axes(const SweepKeys& sweep) {
   std::vector<ProblemAxis> out;
-  for (const auto& item : sweep.get_section_list("axes")) {
-    const std::string& name = item.get_string("name");
+  for (const AxisKeys& item : sweep.axes.value) {
+    const std::string& name = item.name.value;
     if (name == view_axis || name == roughness_axis) continue;
-    for (const char* key : {"from", "to", "count"})
-      if (!item.given(key))
-        item.reject(key, "is required for an axis the BRDF expression adds ('" + name + "' is not " + view_axis +
-                             " or " + roughness_axis + ")");
+    const auto require = [&](const auto& key) {
+      if (!key.written)
+        key.reject("is required for an axis the BRDF expression adds ('" + name + "' is not " + view_axis + " or " +
+                   roughness_axis + ")");
+    };
+    require(item.from), require(item.to), require(item.count);
     if (name == "pi" || std::ranges::find(pbrfit::brdf::direction_input_names(), name) != pbrfit::brdf::direction_input_names().end())
-      item.reject("name", "is '" + name + "', which the expression already reads as a direction input");
-    pbrfit::sweep::GridAxis axis{name, item.get_number("from"), item.get_number("to"), std::size_t(item.get_int("count")),
-                                 item.given("samples") && item.get_string("samples") == "centres"
-                                     ? pbrfit::sweep::Placement::centres
-                                     : pbrfit::sweep::Placement::edges};
+      item.name.reject("is '" + name + "', which the expression already reads as a direction input");
+    pbrfit::sweep::GridAxis axis{name, item.from.value, item.to.value, std::size_t(item.count.value), item.samples.value};
     out.push_back({name, "axis " + name + " of the BRDF expression", -HUGE_VAL, HUGE_VAL, axis});
   }
   return out;
 }
 
 // The end values of an axis as the job sets it (or the default).
-std::vector<double> axis_ends(const spec::Section& sweep, const std::string& name, double from, double to) {
-  for (const auto& item : sweep.get_section_list("axes"))
-    if (item.get_string("name") == name)
-      return {item.given("from") ? item.get_number("from") : from, item.given("to") ? item.get_number("to") : to};
+std::vector<double> axis_ends(const SweepKeys& sweep, const std::string& name, double from, double to) {
+  for (const AxisKeys& item : sweep.axes.value)
+    if (item.name.value == name)
+      return {item.from.written ? item.from.value : from, item.to.written ? item.to.value : to};
   return {from, to};
 }
 
 // Refuses an expression that is negative or not finite anywhere on a probe of views, lights and the axes'
 // end values: a BRDF is a non-negative number wherever both directions are above the horizon.
-void check_expression(const spec::Section& section, const ExpressionBrdf& f, const std::vector<std::vector<double>>& ends) {
+void check_expression(const spec::Located<std::string>& text, const ExpressionBrdf& f,
+                      const std::vector<std::vector<double>>& ends) {
   std::vector<double> axes(ends.size());
   const auto check_at = [&](const Vector3& l, const Vector3& v) {
     const double value = f.value(l, v, axes);
-    if (!std::isfinite(value)) section.reject("expression", "is not a finite number at " + f.where(l, v, axes));
-    if (value < 0.0) section.reject("expression", "is negative (" + number_text(value) + ") at " + f.where(l, v, axes));
+    if (!std::isfinite(value)) text.reject("is not a finite number at " + f.where(l, v, axes));
+    if (value < 0.0) text.reject("is negative (" + number_text(value) + ") at " + f.where(l, v, axes));
   };
   const std::size_t corners = std::size_t(1) << ends.size();
   for (std::size_t corner = 0; corner < corners; ++corner) {
@@ -161,22 +160,22 @@ void check_expression(const spec::Section& section, const ExpressionBrdf& f, con
   }
 }
 
-LtcModelSpec expression_model(const spec::Section& sweep, const spec::Section& section, LtcProblemSettings& s) {
+LtcModelSpec expression_model(const SweepKeys& sweep, const BrdfKeys& brdf, LtcProblemSettings& s) {
   s.extra_axes = further_axes(sweep);
-  if (s.extra_axes.size() > 8) sweep.reject("axes", "adds more than 8 axes to the BRDF expression");
+  if (s.extra_axes.size() > 8) sweep.axes.reject("adds more than 8 axes to the BRDF expression");
   auto f = std::make_shared<ExpressionBrdf>();
   f->axis_names = {roughness_axis};
   for (const auto& axis : s.extra_axes) f->axis_names.push_back(axis.name);
-  f->program = parse_expression_at(section, "expression", {ExpressionBrdf::names(f->axis_names), {}}).program;
+  f->program = parse_expression_at(brdf.expression, {ExpressionBrdf::names(f->axis_names), {}}).program;
   std::vector<std::vector<double>> ends = {axis_ends(sweep, roughness_axis, 0.0, 1.0)};
   for (const auto& axis : s.extra_axes) ends.push_back({axis.default_axis.lower, axis.default_axis.upper});
-  check_expression(section, *f, ends);
+  check_expression(brdf.expression, *f, ends);
   s.roughness_description = "roughness r in [0, 1], read by the BRDF expression as 'roughness'";
-  s.attributes["brdf_expression"] = section.get_string("expression");
+  s.attributes["brdf_expression"] = brdf.expression.value;
   const std::size_t extras = s.extra_axes.size();
   LtcModelSpec spec;
-  spec.name = section.given("name") ? section.get_string("name") : "expression";
-  spec.description = "f(l, v) = " + section.get_string("expression") + ", times n.l";
+  spec.name = brdf.name.value_or("expression");
+  spec.description = "f(l, v) = " + brdf.expression.value + ", times n.l";
   spec.lobe = [f, extras](std::span<const double> c) -> std::shared_ptr<const pbrfit::brdf::Lobe> {
     // c = (extra axes..., x, roughness); the expression's axis row is (roughness, extra axes...).
     std::vector<double> axes = {c[extras + 1]};
@@ -196,10 +195,10 @@ LtcModelSpec expression_model(const spec::Section& sweep, const spec::Section& s
 
 constexpr double luminance_weights[3] = {0.2126, 0.7152, 0.0722};  // linear Rec. 709
 
-LtcModelSpec material_model(const spec::Section& section, LtcProblemSettings& s) {
-  const std::string& name = section.get_string("material");
+LtcModelSpec material_model(const BrdfKeys& brdf, LtcProblemSettings& s) {
+  const std::string& name = brdf.material.value;
   jobs::brdf::MaterialSource source;
-  if (section.given("merl_directory")) source.merl_directory = section.get_string("merl_directory");
+  if (brdf.merl_directory.written) source.merl_directory = brdf.merl_directory.value;
   auto table = std::make_shared<const pbrfit::brdf::MerlTable>(jobs::brdf::load_material(name, source));
   s.roughness_axis = false;
   s.attributes["material"] = name;
@@ -212,7 +211,7 @@ LtcModelSpec material_model(const spec::Section& section, LtcProblemSettings& s)
     return value;
   };
   LtcModelSpec spec;
-  spec.name = section.given("name") ? section.get_string("name") : name;
+  spec.name = brdf.name.value_or(name);
   spec.description = "measured material " + name + " (luminance)";
   spec.lobe = [rgb](std::span<const double> c) -> std::shared_ptr<const pbrfit::brdf::Lobe> {
     const double cos_v = ltc_cos_theta(c[0]);
@@ -245,33 +244,37 @@ LtcModelSpec material_model(const spec::Section& section, LtcProblemSettings& s)
 
 }  // namespace
 
-spec::Schema brdf_schema() {
-  spec::Schema s("brdf");
-  s.string("expression", "a BRDF f(l, v) of nl, nv, nh, vh, lv, rv, hr, lr, pi, roughness and the axes the job adds");
-  s.choice("material", jobs::brdf::merl_material_names(), "a MERL material: its .binary file or its neural stand-in");
-  s.string("merl_directory", "where the MERL .binary files are (default: the neural stand-ins of data/merl_nbrdf)");
-  s.string("name", "the table's model and result group (default: 'expression', or the material's name)");
-  return s;
+spec::Keys<BrdfKeys> brdf_keys() {
+  spec::Keys<BrdfKeys> k("brdf");
+  k.string("expression", "a BRDF f(l, v) of nl, nv, nh, vh, lv, rv, hr, lr, pi, roughness and the axes the job adds",
+           &BrdfKeys::expression);
+  k.choice("material", jobs::brdf::merl_material_names(), "a MERL material: its .binary file or its neural stand-in",
+           &BrdfKeys::material);
+  k.string("merl_directory", "where the MERL .binary files are (default: the neural stand-ins of data/merl_nbrdf)",
+           &BrdfKeys::merl_directory);
+  k.string("name", "the table's model and result group (default: 'expression', or the material's name)",
+           &BrdfKeys::name);
+  return k;
 }
 
-std::unique_ptr<SweepProblem> make_ltc(const spec::Section& sweep) {
-  LtcProblemSettings s = objective_settings(sweep.get_section("objective"));
+std::unique_ptr<SweepProblem> make_ltc(const SweepKeys& sweep) {
+  LtcProblemSettings s = objective_settings(sweep.objective);
   s.description = "isotropic LTC tables (Heitz et al. 2016) of chosen BRDF lobes, F = 1";
-  if (!sweep.given("brdf")) {
+  if (!sweep.brdf.written) {
     for (const auto& family : pbrfit::brdf::brdf_families()) s.models.push_back(family_model(family.family));
     return make_ltc_problem(std::move(s));
   }
-  const auto& section = sweep.get_section("brdf");
-  if (section.given("expression") == section.given("material"))
-    sweep.reject("brdf", "needs either 'expression' (a BRDF written out) or 'material' (a MERL material), not both");
-  if (section.given("merl_directory") && !section.given("material")) section.reject("merl_directory", "applies to 'material' only");
-  if (sweep.given("models")) sweep.reject("models", "does not apply to a 'brdf' section (it makes one model)");
-  s.models.push_back(section.given("expression") ? expression_model(sweep, section, s) : material_model(section, s));
+  const BrdfKeys& brdf = sweep.brdf.value;
+  if (brdf.expression.written == brdf.material.written)
+    sweep.brdf.reject("needs either 'expression' (a BRDF written out) or 'material' (a MERL material), not both");
+  if (brdf.merl_directory.written && !brdf.material.written) brdf.merl_directory.reject("applies to 'material' only");
+  if (sweep.models.written) sweep.models.reject("does not apply to a 'brdf' section (it makes one model)");
+  s.models.push_back(brdf.expression.written ? expression_model(sweep, brdf, s) : material_model(brdf, s));
   return make_ltc_problem(std::move(s));
 }
 
-std::unique_ptr<SweepProblem> make_ltc_ggx(const spec::Section& sweep) {
-  LtcProblemSettings s = objective_settings(sweep.get_section("objective"));
+std::unique_ptr<SweepProblem> make_ltc_ggx(const SweepKeys& sweep) {
+  LtcProblemSettings s = objective_settings(sweep.objective);
   s.description = "isotropic LTC fit of GGX (F = 1, height-correlated Smith), Heitz et al. 2016, on the published grid";
   s.roughness_description = "perceptual roughness r, alpha = max(r^2, 1e-5)";
   LtcModelSpec ggx = family_model(pbrfit::brdf::BrdfFamily::ggx);

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "pbrfit/jobs/sweep/problem_catalogue.hpp"
+#include "pbrfit/jobs/sweep/sweep_keys.hpp"
 #include "pbrfit/jobs/sweep/sweep_workload.hpp"
 #include "pbrfit/sweep/hierarchy.hpp"
 
@@ -13,13 +14,6 @@ namespace pbrfit::jobs::sweep {
 namespace {
 
 using pbrfit::sweep::GridAxis;
-
-// An engine's message without its "module: " prefix, to follow the key it is reported at.
-std::string engine_reason(const std::exception& e) {
-  const std::string text = e.what();
-  const auto colon = text.find(": ");
-  return colon != std::string::npos && colon < 12 ? text.substr(colon + 2) : text;
-}
 
 std::string number_text(double value) {
   char text[32];
@@ -39,52 +33,48 @@ std::string listed(const std::vector<std::string>& names) {
   return out;
 }
 
-void reject_unused_objective_keys(const spec::Section& objective, const ProblemEntry& problem) {
-  const spec::Schema schema = objective_schema();
-  for (const auto& key : schema.fields()) {
-    if (objective.given(key.name) && std::ranges::find(problem.objective_keys, key.name) == problem.objective_keys.end())
-      objective.reject(key.name, "is not used by problem '" + problem.name + "' (it reads: " +
-                                     (problem.objective_keys.empty() ? "none" : listed(problem.objective_keys)) + ")");
-  }
+void reject_unused_objective_keys(const ObjectiveKeys& objective, const ProblemEntry& problem) {
+  for (const spec::WrittenKey& key : objective.written)
+    if (std::ranges::find(problem.objective_keys, key.key) == problem.objective_keys.end())
+      key.reject("is not used by problem '" + problem.name + "' (it reads: " +
+                 (problem.objective_keys.empty() ? "none" : listed(problem.objective_keys)) + ")");
 }
 
-std::vector<std::size_t> chosen_models(const spec::Section& s, const std::vector<ModelInfo>& models) {
+std::vector<std::size_t> chosen_models(const SweepKeys& s, const std::vector<ModelInfo>& models) {
   std::vector<std::string> names;
   for (const auto& m : models) names.push_back(m.name);
   std::vector<std::size_t> chosen;
-  if (!s.given("models")) {
+  if (!s.models.written) {
     for (std::size_t k = 0; k < models.size(); ++k) chosen.push_back(k);
     return chosen;
   }
-  for (const auto& name : s.get_string_list("models")) {
+  for (const auto& name : s.models.value) {
     const auto found = std::ranges::find(names, name);
     if (found == names.end())
-      s.reject("models", "names '" + name + "', not a model of the problem (" + listed(names) + ")" + hint(name, names));
+      s.models.reject("names '" + name + "', not a model of the problem (" + listed(names) + ")" + hint(name, names));
     const auto index = std::size_t(found - names.begin());
-    if (std::ranges::find(chosen, index) != chosen.end()) s.reject("models", "names '" + name + "' twice");
+    if (std::ranges::find(chosen, index) != chosen.end()) s.models.reject("names '" + name + "' twice");
     chosen.push_back(index);
   }
   return chosen;
 }
 
-void apply_axis(const spec::Section& item, const ProblemAxis& info, GridAxis& axis) {
-  if (item.given("from")) axis.lower = item.get_number("from");
-  if (item.given("to")) axis.upper = item.get_number("to");
-  if (item.given("count")) axis.count = std::size_t(item.get_int("count"));
-  if (item.given("samples"))
-    axis.placement = item.get_string("samples") == "centres" ? pbrfit::sweep::Placement::centres
-                                                               : pbrfit::sweep::Placement::edges;
+void apply_axis(const AxisKeys& item, const ProblemAxis& info, GridAxis& axis) {
+  if (item.from.written) axis.lower = item.from.value;
+  if (item.to.written) axis.upper = item.to.value;
+  if (item.count.written) axis.count = std::size_t(item.count.value);
+  if (item.samples.written) axis.placement = item.samples.value;
   const auto range = "must lie in [" + number_text(info.min) + ", " + number_text(info.max) + "] for this problem";
-  if (axis.lower < info.min || axis.lower > info.max) item.reject(item.given("from") ? "from" : "to", range);
-  if (axis.upper < info.min || axis.upper > info.max) item.reject(item.given("to") ? "to" : "from", range);
-  try {
-    pbrfit::sweep::validate(axis);
-  } catch (const std::invalid_argument& e) {
-    item.reject(item.given("count") ? "count" : "name", "gives an invalid axis: " + engine_reason(e));
+  if (axis.lower < info.min || axis.lower > info.max) (item.from.written ? item.from : item.to).reject(range);
+  if (axis.upper < info.min || axis.upper > info.max) (item.to.written ? item.to : item.from).reject(range);
+  if (const std::string reason = pbrfit::sweep::invalid_reason(axis); !reason.empty()) {
+    const std::string message = "gives an invalid axis: " + reason;
+    if (item.count.written) item.count.reject(message);
+    item.name.reject(message);
   }
 }
 
-std::vector<GridAxis> grid_axes(const spec::Section& s, const std::vector<ProblemAxis>& infos) {
+std::vector<GridAxis> grid_axes(const SweepKeys& s, const std::vector<ProblemAxis>& infos) {
   std::vector<GridAxis> axes;
   std::vector<std::string> names;
   for (const auto& info : infos) {
@@ -92,135 +82,133 @@ std::vector<GridAxis> grid_axes(const spec::Section& s, const std::vector<Proble
     names.push_back(info.name);
   }
   std::set<std::string> seen;
-  for (const auto& item : s.get_section_list("axes")) {
-    const std::string& name = item.get_string("name");
+  for (const AxisKeys& item : s.axes.value) {
+    const std::string& name = item.name.value;
     const auto found = std::ranges::find(names, name);
     if (found == names.end())
-      item.reject("name", "is '" + name + "', not an axis of the problem (" + listed(names) + ")" + hint(name, names));
-    if (!seen.insert(name).second) item.reject("name", "is '" + name + "' a second time");
+      item.name.reject("is '" + name + "', not an axis of the problem (" + listed(names) + ")" + hint(name, names));
+    if (!seen.insert(name).second) item.name.reject("is '" + name + "' a second time");
     const auto d = std::size_t(found - names.begin());
     apply_axis(item, infos[d], axes[d]);
   }
   return axes;
 }
 
-std::optional<pbrfit::sweep::Marching> marching(const spec::Section& s, const std::vector<GridAxis>& axes) {
-  if (!s.has("march")) return std::nullopt;
-  const auto& march = s.get_section("march");
-  const std::string& name = march.get_string("axis");
-  for (std::size_t d = 0; d < axes.size(); ++d)
-    if (axes[d].name == name) return pbrfit::sweep::Marching{d, march.get_bool("reverse")};
+// The index of the grid's axis `name`, which `key` (written as "KEY VERB 'name'") names; refused at the key
+// when the grid has no such axis.
+template <class Key>
+std::size_t axis_index(const Key& key, const std::string& verb, const std::string& name,
+                       const std::vector<GridAxis>& axes) {
   std::vector<std::string> names;
   for (const auto& a : axes) names.push_back(a.name);
-  march.reject("axis", "is '" + name + "', not an axis of the problem (" + listed(names) + ")" + hint(name, names));
+  const auto found = std::ranges::find(names, name);
+  if (found == names.end())
+    key.reject(verb + " '" + name + "', not an axis of the problem (" + listed(names) + ")" + hint(name, names));
+  return std::size_t(found - names.begin());
 }
 
-std::vector<std::size_t> projections(const spec::Section& s, const std::vector<GridAxis>& axes) {
-  std::vector<std::string> names;
-  for (const auto& a : axes) names.push_back(a.name);
+std::optional<pbrfit::sweep::Marching> marching(const SweepKeys& s, const std::vector<GridAxis>& axes) {
+  if (!s.march) return std::nullopt;
+  return pbrfit::sweep::Marching{axis_index(s.march->axis, "is", s.march->axis.value, axes), s.march->reverse};
+}
+
+std::vector<std::size_t> projections(const SweepKeys& s, const std::vector<GridAxis>& axes) {
   std::vector<std::size_t> out;
-  for (const auto& name : s.get_string_list("projections")) {
-    const auto found = std::ranges::find(names, name);
-    if (found == names.end())
-      s.reject("projections", "names '" + name + "', not an axis of the problem (" + listed(names) + ")" + hint(name, names));
-    const auto d = std::size_t(found - names.begin());
-    if (std::ranges::find(out, d) != out.end()) s.reject("projections", "names '" + name + "' twice");
-    if (axes.size() < 2) s.reject("projections", "needs a grid of at least two axes");
+  for (const auto& name : s.projections.value) {
+    const std::size_t d = axis_index(s.projections, "names", name, axes);
+    if (std::ranges::find(out, d) != out.end()) s.projections.reject("names '" + name + "' twice");
+    if (axes.size() < 2) s.projections.reject("needs a grid of at least two axes");
     out.push_back(d);
   }
   return out;
 }
 
-void apply_parameter(const spec::Section& item, optimize::Parameter& p) {
-  if (item.given("lower")) p.lower = item.get_number("lower");
-  if (item.given("upper")) p.upper = item.get_number("upper");
-  if (item.given("transform")) {
-    const std::string& t = item.get_string("transform");
-    p.transform = t == "log" ? optimize::Transform::log : t == "cosine" ? optimize::Transform::cosine
-                                                                        : optimize::Transform::linear;
-  }
-  try {
-    optimize::validate(p);
-  } catch (const std::invalid_argument& e) {
-    item.reject(item.given("lower") ? "lower" : item.given("upper") ? "upper" : "transform",
-                "gives an invalid parameter: " + engine_reason(e));
+void apply_parameter(const ParameterKeys& item, optimize::Parameter& p) {
+  if (item.lower.written) p.lower = item.lower.value;
+  if (item.upper.written) p.upper = item.upper.value;
+  if (item.transform.written) p.transform = item.transform.value;
+  if (const std::string reason = optimize::invalid_reason(p); !reason.empty()) {
+    const std::string message = "gives an invalid parameter: " + reason;
+    if (item.lower.written) item.lower.reject(message);
+    if (item.upper.written) item.upper.reject(message);
+    item.transform.reject(message);
   }
 }
 
-std::vector<std::vector<optimize::Parameter>> parameters(const spec::Section& s, const std::vector<ModelInfo>& models,
+std::vector<std::vector<optimize::Parameter>> parameters(const SweepKeys& s, const std::vector<ModelInfo>& models,
                                                          const std::vector<std::size_t>& chosen) {
   std::vector<std::vector<optimize::Parameter>> out;
   for (std::size_t k : chosen) out.push_back(models[k].parameters);
-  for (const auto& item : s.get_section_list("parameters")) {
+  for (const ParameterKeys& item : s.parameters.value) {
     bool applied = false;
     for (std::size_t k = 0; k < chosen.size(); ++k) {
-      if (item.given("model") && item.get_string("model") != models[chosen[k]].name) continue;
+      if (item.model.written && item.model.value != models[chosen[k]].name) continue;
       for (auto& p : out[k])
-        if (p.name == item.get_string("name")) apply_parameter(item, p), applied = true;
+        if (p.name == item.name.value) apply_parameter(item, p), applied = true;
     }
-    if (!applied) item.reject("name", "is '" + item.get_string("name") + "', not a parameter of the chosen models");
+    if (!applied) item.name.reject("is '" + item.name.value + "', not a parameter of the chosen models");
   }
   return out;
 }
 
-pbrfit::sweep::CellFitOptions fit_options(const spec::Section& fit) {
+pbrfit::sweep::CellFitOptions fit_options(const FitKeys& fit) {
   pbrfit::sweep::CellFitOptions o;
-  const std::string& policy = fit.get_string("global_search");
-  o.policy = policy == "always" ? pbrfit::sweep::GlobalPolicy::always
-             : policy == "never" ? pbrfit::sweep::GlobalPolicy::never
-                                 : pbrfit::sweep::GlobalPolicy::when_poor;
-  o.poor_ratio = fit.get_number("poor_ratio");
-  o.poor_absolute = fit.get_number("poor_absolute");
-  o.warm_evaluations = std::size_t(fit.get_int("warm_evaluations"));
-  o.warm_search.initial_step = fit.get_number("warm_step");
-  o.warm_search.restart_step = fit.get_number("warm_step") / 2;
+  o.policy = fit.global_search;
+  o.poor_ratio = fit.poor_ratio;
+  o.poor_absolute = fit.poor_absolute;
+  o.warm_evaluations = fit.warm_evaluations;
+  o.warm_search.initial_step = fit.warm_step;
+  o.warm_search.restart_step = fit.warm_step / 2;
   o.warm_search.x_tolerance = 1e-4;
   o.warm_search.f_tolerance_relative = 1e-5;
   o.warm_search.max_restarts = 3;
   o.warm_search.restart_gain_relative = 1e-4;
-  o.global.max_evaluations = std::size_t(fit.get_int("max_evaluations"));
+  o.global.max_evaluations = fit.max_evaluations;
   return o;
 }
 
 // Keys that only problem `expression` reads.
-void reject_expression_keys(const spec::Section& s) {
-  if (s.has("expression")) s.reject("expression", "applies to problem 'expression' only");
-  for (const auto& item : s.get_section_list("parameters"))
-    if (item.given("start")) item.reject("start", "applies to problem 'expression' only");
+void reject_expression_keys(const SweepKeys& s) {
+  if (s.expression.written) s.expression.reject("applies to problem 'expression' only");
+  for (const ParameterKeys& item : s.parameters.value)
+    if (item.start.written) item.start.reject("applies to problem 'expression' only");
 }
 
 std::unique_ptr<runtime::Workload> make_sweep(const spec::JobSpec& job) {
   return std::make_unique<SweepWorkload>(sweep_settings(job.kind_section));
 }
 
-}  // namespace
-
-SweepSettings sweep_settings(const spec::Section& s) {
-  const ProblemEntry& entry = find_problem(s.get_string("problem"));
-  reject_unused_objective_keys(s.get_section("objective"), entry);
+// The settings the keys describe, checked against the problem they name.
+SweepSettings settings_of(const SweepKeys& s) {
+  const ProblemEntry& entry = find_problem(s.problem.value);
+  reject_unused_objective_keys(s.objective, entry);
   if (entry.name != "expression") reject_expression_keys(s);
-  if (entry.name != "ltc" && s.given("brdf")) s.reject("brdf", "applies to problem 'ltc' only");
+  if (entry.name != "ltc" && s.brdf.written) s.brdf.reject("applies to problem 'ltc' only");
   SweepSettings settings;
   settings.problem = entry.make(s);
   const auto models = settings.problem->models();
   settings.models = chosen_models(s, models);
   settings.parameters = parameters(s, models, settings.models);
   settings.axes = grid_axes(s, settings.problem->axes());
-  settings.levels = std::size_t(s.get_int("levels"));
+  settings.levels = std::size_t(s.levels.value);
   const std::size_t possible = pbrfit::sweep::max_level_count(settings.axes);
   if (settings.levels > possible)
-    s.reject("levels", "is " + std::to_string(settings.levels) + ", but this grid can be halved into at most " +
-                           std::to_string(possible) + " levels");
+    s.levels.reject("is " + std::to_string(settings.levels) + ", but this grid can be halved into at most " +
+                    std::to_string(possible) + " levels");
   settings.marching = marching(s, settings.axes);
   settings.projections = projections(s, settings.axes);
-  settings.fit = fit_options(s.get_section("fit"));
+  settings.fit = fit_options(s.fit);
   settings.fit.global.tolerance = settings.problem->tolerance_schedule();
   return settings;
 }
 
+}  // namespace
+
+SweepSettings sweep_settings(const spec::Section& sweep) { return settings_of(sweep_keys().read(sweep)); }
+
 JobKind sweep_kind() {
-  return {"sweep", "hierarchical parameter sweeps: DE -> Nelder-Mead fits per grid cell, warm-started", sweep_schema(),
-          make_sweep};
+  return {"sweep", "hierarchical parameter sweeps: DE -> Nelder-Mead fits per grid cell, warm-started",
+          sweep_keys().schema(), make_sweep};
 }
 
 }  // namespace pbrfit::jobs::sweep

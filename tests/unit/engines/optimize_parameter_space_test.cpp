@@ -55,6 +55,8 @@ TEST_CASE("Out-of-range values are clamped, invalid parameters rejected", "[opti
   CHECK_THROWS_AS(validate(Parameter{"bad", 2.0, 1.0, Transform::linear}), std::invalid_argument);
   const double infinity = std::numeric_limits<double>::infinity();
   CHECK_THROWS_AS(validate(Parameter{"bad", 0.0, infinity, Transform::linear}), std::invalid_argument);
+  CHECK(invalid_reason(Parameter{"k", 0.0, 1.0, Transform::log}) == "log parameter 'k' needs lower > 0");
+  CHECK(invalid_reason(scale).empty());
 }
 
 TEST_CASE("A parameter space converts whole vectors and wraps objectives", "[optimize]") {

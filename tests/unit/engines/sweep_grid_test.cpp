@@ -32,6 +32,8 @@ TEST_CASE("axes sample their range at edges or at cell centres") {
   CHECK_THROWS_AS(validate(edges("one", 1)), std::invalid_argument);
   CHECK_THROWS_AS(validate(edges("backwards", 3, 1.0, 0.0)), std::invalid_argument);
   CHECK_THROWS_AS(validate(GridAxis{"none", 0, 1, 0, Placement::centres}), std::invalid_argument);
+  CHECK(invalid_reason(edges("one", 1)) == "axis 'one' needs at least 2 samples at cell edges");
+  CHECK(invalid_reason(edges("r", 5)).empty());
 }
 
 TEST_CASE("cells are numbered row-major, the last axis fastest") {

@@ -1,6 +1,7 @@
 // spec/keys.hpp: a key declared once fills its member (converted), its optional (only when written), its
 // Written (value and whether written) or its callable; choices fill their bound values, sections and lists
-// of sections their nested settings; checks refuse the job at their key; a check naming no key is a bug.
+// of sections their nested settings; the keys a file writes are listed in the schema's order; checks
+// refuse the job at their key; a check naming no key is a bug.
 #include <catch2/catch_test_macros.hpp>
 
 #include <cstdint>
@@ -33,6 +34,7 @@ struct Demo {
   Range range;
   std::vector<Range> ranges;
   std::string loaded;
+  std::vector<spec::WrittenKey> written;
 };
 
 spec::Keys<Range> range_keys() {
@@ -67,6 +69,7 @@ spec::Keys<Demo> demo_keys() {
     if (d.label == std::optional<std::string>("bad column")) throw InputError(where, "the file has no such column");
     return "";
   });
+  k.list_written(&Demo::written);
   return k;
 }
 
@@ -105,6 +108,8 @@ TEST_CASE("keys left out fill their defaults, and optional keys without one fill
   CHECK((d.range.low == 0.0 && d.range.high == 1.0));
   CHECK(d.ranges.empty());
   CHECK(d.loaded == "contents of a");
+  REQUIRE(d.written.size() == 1);  // defaults are not written
+  CHECK(d.written[0].key == "mode");
 }
 
 TEST_CASE("written keys fill their members, converted, and their callables") {
@@ -123,6 +128,17 @@ TEST_CASE("written keys fill their members, converted, and their callables") {
   CHECK((d.ranges[0].low == 1.0 && d.ranges[0].high == 2.0));
   CHECK((d.ranges[1].low == 0.0 && d.ranges[1].high == 3.0));
   CHECK(d.loaded == "contents of b");
+  std::vector<std::string> written;
+  for (const auto& w : d.written) written.push_back(w.key);
+  CHECK(written == std::vector<std::string>{"count", "ratio", "mode", "label", "flag", "sizes", "half", "range",
+                                            "ranges", "file"});  // in the schema's order
+  std::string refused;
+  try {
+    d.written[1].reject("is refused");
+  } catch (const InputError& e) {
+    refused = e.what();
+  }
+  CHECK(refused == "job.yaml:5:10: error: 'ratio' is refused");
 }
 
 TEST_CASE("a check refuses the job at its key, nested checks at theirs") {

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "pbrfit/jobs/sweep/sweep_problem.hpp"
+#include "pbrfit/jobs/sweep/sweep_keys.hpp"
 #include "pbrfit/spec/schema.hpp"
 
 namespace pbrfit::jobs::sweep {
@@ -15,9 +16,9 @@ struct ProblemEntry {
   std::string name;
   std::string summary;
   std::vector<std::string> objective_keys;
-  // From the job's `sweep` section (its `objective`, and for `expression` its own keys); throws InputError
-  // at the offending key for settings the problem cannot use.
-  std::function<std::unique_ptr<SweepProblem>(const spec::Section& sweep)> make;
+  // From the keys of the job's `sweep` section (its `objective`, and the problem's own sections); throws
+  // InputError at the offending key for settings the problem cannot use.
+  std::function<std::unique_ptr<SweepProblem>(const SweepKeys& sweep)> make;
 };
 
 const std::vector<ProblemEntry>& problem_catalogue();
@@ -27,14 +28,12 @@ const ProblemEntry& find_problem(const std::string& name);  // std::logic_error 
 // The schema of `objective`: every key any problem reads, none with a default (problems choose theirs).
 spec::Schema objective_schema();
 
-// Problem `expression` (expression_problem.hpp) from the job's `sweep` section.
-std::unique_ptr<SweepProblem> make_expression(const spec::Section& sweep);
-spec::Schema expression_schema();
+// Problem `expression` (expression_problem.hpp) from the job's keys (expression_settings.cpp).
+std::unique_ptr<SweepProblem> make_expression(const SweepKeys& sweep);
 
-// Problems `ltc` and `ltc_ggx` (ltc_problem.hpp) from the job's `sweep` section; `brdf` is the section of
-// problem `ltc` that names an expression BRDF or a measured material instead of the built-in families.
-std::unique_ptr<SweepProblem> make_ltc(const spec::Section& sweep);
-std::unique_ptr<SweepProblem> make_ltc_ggx(const spec::Section& sweep);
-spec::Schema brdf_schema();
+// Problems `ltc` and `ltc_ggx` (ltc_problem.hpp) from the job's keys (ltc_settings.cpp); `brdf` is the
+// section of problem `ltc` that names an expression BRDF or a measured material instead of the families.
+std::unique_ptr<SweepProblem> make_ltc(const SweepKeys& sweep);
+std::unique_ptr<SweepProblem> make_ltc_ggx(const SweepKeys& sweep);
 
 }  // namespace pbrfit::jobs::sweep

@@ -8,9 +8,8 @@
 namespace pbrfit::jobs::sweep {
 
 JobKind sweep_kind();
-spec::Schema sweep_schema();
 
-// The settings of a validated `sweep` section; throws InputError at the offending key for settings that
+// The settings of a validated `sweep` section (its keys: sweep_keys.hpp); throws InputError at the offending key for settings that
 // are individually valid but inconsistent (an axis the problem does not have, too many levels, ...).
 SweepSettings sweep_settings(const spec::Section& sweep);
 
