@@ -6,12 +6,22 @@ namespace {
 
 constexpr std::uint64_t max_elements_per_block = std::uint64_t(1) << 32;
 
-std::vector<bool> single_precision_slots(const Table& table) {
-  if (!table.is_record()) return {table.type == ValueType::f32};
-  std::vector<bool> slots;
-  for (const auto& f : table.fields)
-    if (is_numeric(f.type)) slots.push_back(f.type == ValueType::f32);
-  return slots;
+bool is_signed(ValueType type) { return type == ValueType::i32 || type == ValueType::i64; }
+
+void put_number(ByteWriter& out, ValueType type, const Number& number) {
+  if (type == ValueType::f32) out.put(float(number.real()));
+  else if (type == ValueType::f64) out.put(number.real());
+  else if (is_signed(type)) out.put_signed_varint(number.signed_value());
+  else out.put_varint(number.unsigned_value());
+}
+
+Number get_number(ByteReader& in, ValueType type) {
+  if (type == ValueType::f32) return double(in.get<float>());
+  if (type == ValueType::f64) return in.get<double>();
+  const std::size_t start = in.offset();
+  const Number number = is_signed(type) ? Number(in.get_signed_varint()) : Number(in.get_varint());
+  if (!holds(type, number)) throw ByteFormatError(start, std::string("value out of range for ") + type_name(type));
+  return number;
 }
 
 }  // namespace
@@ -23,7 +33,7 @@ BlockCodec::BlockCodec(const ResultLayout& layout) : index_(layout) {
       for (std::size_t d = 0; d < table.axes.size(); ++d)
         extent.push_back(d == 0 && table.growing ? 0 : group.axis(table.axes[d]).values.size());
       extents_.push_back(std::move(extent));
-      single_.push_back(single_precision_slots(table));
+      number_types_.push_back(number_types(table));
     }
   }
 }
@@ -34,11 +44,8 @@ void BlockCodec::encode(ByteWriter& out, const Block& block) const {
   out.put_varint(t);
   for (const auto o : block.offset) out.put_varint(o);
   for (const auto c : block.count) out.put_varint(c);
-  const auto& slots = single_[t];
-  for (std::size_t i = 0; i < block.values.size(); ++i) {
-    if (slots[i % slots.size()]) out.put(float(block.values[i]));
-    else out.put(block.values[i]);
-  }
+  const auto& types = number_types_[t];
+  for (std::size_t i = 0; i < block.values.size(); ++i) put_number(out, types[i % types.size()], block.values[i]);
   for (const auto& text : block.texts) out.put_string(text);
 }
 
@@ -61,11 +68,11 @@ Block BlockCodec::decode(ByteReader& in) const {
     elements *= block.count[d];
     if (elements > max_elements_per_block) throw ByteFormatError(start, "block is implausibly large");
   }
-  const auto& slots = single_[t];
+  const auto& types = number_types_[t];
   const std::uint64_t numbers = elements * table.numbers_per_element();
-  if (numbers > in.remaining()) throw ByteFormatError(in.offset(), "block values exceed the data");
+  if (numbers > in.remaining()) throw ByteFormatError(in.offset(), "block values exceed the data");  // a byte each at least
   block.values.resize(numbers);
-  for (std::size_t i = 0; i < numbers; ++i) block.values[i] = slots[i % slots.size()] ? in.get<float>() : in.get<double>();
+  for (std::size_t i = 0; i < numbers; ++i) block.values[i] = get_number(in, types[i % types.size()]);
   const std::uint64_t texts = elements * table.texts_per_element();
   if (texts > in.remaining() / sizeof(std::uint64_t)) throw ByteFormatError(in.offset(), "block texts exceed the data");
   block.texts.resize(texts);

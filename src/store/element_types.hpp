@@ -1,7 +1,8 @@
 #pragma once
 // HDF5 types of table elements: in the file, each value in its declared precision (little-endian) and
-// texts as variable-length UTF-8; in memory, every number as a double and every text as a char*, eight
-// bytes a value, records packed field after field. HDF5 converts between the two. Private to the store.
+// texts as variable-length UTF-8; in memory, every real as a double, every integer as a 64-bit integer of
+// its signedness and every text as a char*, eight bytes a value, records packed field after field. HDF5
+// converts between the two. Private to the store.
 #include <cstddef>
 #include <vector>
 

@@ -1,11 +1,31 @@
 #include "pbrfit/store/result_layout.hpp"
 
+#include <limits>
 #include <numeric>
 #include <stdexcept>
 
 namespace pbrfit::store {
 
 bool is_numeric(ValueType type) { return type != ValueType::text; }
+
+bool is_integer(ValueType type) { return is_numeric(type) && type != ValueType::f32 && type != ValueType::f64; }
+
+bool holds(ValueType type, const Number& number) {
+  if (!is_integer(type)) return is_numeric(type);
+  if (!number.is_integer()) return false;
+  if (number.negative()) {
+    const std::int64_t value = number.signed_value();
+    return type == ValueType::i64 || (type == ValueType::i32 && value >= std::numeric_limits<std::int32_t>::min());
+  }
+  const std::uint64_t value = number.unsigned_value();
+  switch (type) {
+    case ValueType::i32: return value <= std::uint64_t(std::numeric_limits<std::int32_t>::max());
+    case ValueType::i64: return value <= std::uint64_t(std::numeric_limits<std::int64_t>::max());
+    case ValueType::u8: return value <= std::numeric_limits<std::uint8_t>::max();
+    case ValueType::u32: return value <= std::numeric_limits<std::uint32_t>::max();
+    default: return true;
+  }
+}
 
 const char* type_name(ValueType type) {
   switch (type) {
@@ -58,6 +78,14 @@ std::uint32_t TableIndex::find(const std::string& group, const std::string& tabl
   return found->second;
 }
 
+std::vector<ValueType> number_types(const Table& table) {
+  if (!table.is_record()) return is_numeric(table.type) ? std::vector<ValueType>{table.type} : std::vector<ValueType>{};
+  std::vector<ValueType> types;
+  for (const auto& f : table.fields)
+    if (is_numeric(f.type)) types.push_back(f.type);
+  return types;
+}
+
 void check_block(const Block& block, const Table& table) {
   const std::string where = block.group + "/" + block.table;
   if (block.offset.size() != table.axes.size() || block.count.size() != table.axes.size())
@@ -65,6 +93,14 @@ void check_block(const Block& block, const Table& table) {
   const std::uint64_t n = block.elements();
   if (block.values.size() != n * table.numbers_per_element() || block.texts.size() != n * table.texts_per_element())
     throw std::logic_error("block for " + where + " holds the wrong number of values");
+  const std::vector<ValueType> types = number_types(table);
+  for (std::size_t i = 0; i < block.values.size(); ++i) {
+    const ValueType type = types[i % types.size()];
+    if (!holds(type, block.values[i]))
+      throw std::logic_error("block for " + where + " puts " +
+                             (block.values[i].is_integer() ? "an integer out of the range of" : "a real into") + " a " +
+                             type_name(type) + " element (number " + std::to_string(i) + ")");
+  }
 }
 
 }  // namespace pbrfit::store

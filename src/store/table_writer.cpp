@@ -33,10 +33,8 @@ void write_block(hid_t data, hid_t memory_type, const std::string& path, const T
   check(H5Sselect_hyperslab(space, H5S_SELECT_SET, offset.data(), nullptr, count.data(), nullptr),
         "select block of " + path);
   Handle memory(check(H5Screate_simple(int(count.size()), count.data(), nullptr), "create block space"), H5Sclose);
-  const bool plain_numbers = !table.is_record() && is_numeric(table.type);
-  const std::vector<std::byte> packed = plain_numbers ? std::vector<std::byte>{} : pack_elements(table, block);
-  const void* buffer = plain_numbers ? static_cast<const void*>(block.values.data()) : packed.data();
-  check(H5Dwrite(data, memory_type, memory, space, H5P_DEFAULT, buffer), "write " + path);
+  const std::vector<std::byte> packed = pack_elements(table, block);
+  check(H5Dwrite(data, memory_type, memory, space, H5P_DEFAULT, packed.data()), "write " + path);
 }
 
 void write_table(hid_t file, const Group& group, const Table& table, std::vector<Block> blocks) {

@@ -128,7 +128,7 @@ std::vector<store::Block> ChainWorkload::blocks(WorkItemId id, const Bytes& byte
   if (rows == 0) return out;
   store::Block log{"chain", "log", {0}, {rows}, {}, {}};
   for (std::uint64_t k = 0; k < rows; ++k) {
-    log.values.insert(log.values.end(), {double(id.stage), double(id.item), as_double(r.value) + double(k)});
+    log.values.insert(log.values.end(), {id.stage, id.item, as_double(r.value) + double(k)});
     log.texts.push_back("s" + std::to_string(id.stage) + "i" + std::to_string(id.item) + "k" + std::to_string(k));
   }
   out.push_back(std::move(log));

@@ -35,6 +35,10 @@ class ByteWriter {
     }
     put(std::uint8_t(value));
   }
+  // Signed, zigzag-coded (0, -1, 1, -2, ... as 0, 1, 2, 3, ...): small magnitudes in one byte.
+  void put_signed_varint(std::int64_t value) {
+    put_varint((std::uint64_t(value) << 1) ^ (value < 0 ? ~std::uint64_t(0) : 0));
+  }
   void put_string(const std::string& s) {
     put_array(std::span<const char>(s.data(), s.size()));
   }
@@ -93,6 +97,10 @@ class ByteReader {
       if (!(byte & 0x80)) return value;
     }
     throw ByteFormatError(offset_, "variable-length integer longer than 64 bits");
+  }
+  std::int64_t get_signed_varint() {
+    const std::uint64_t coded = get_varint();
+    return std::int64_t((coded >> 1) ^ (~(coded & 1) + 1));
   }
   std::string get_string() {
     auto chars = get_array<char>();

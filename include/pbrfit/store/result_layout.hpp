@@ -12,12 +12,18 @@
 #include <string>
 #include <vector>
 
+#include "pbrfit/store/number.hpp"
+
 namespace pbrfit::store {
 
 enum class ValueType : std::uint8_t { f32, f64, i32, i64, u8, u32, u64, text };
 
 bool is_numeric(ValueType type);
+bool is_integer(ValueType type);
 const char* type_name(ValueType type);
+// Whether an element of `type` holds `number` exactly: a real type any number, an integer type an integer
+// within its range.
+bool holds(ValueType type, const Number& number);
 
 struct Axis {
   std::string name;            // dataset name inside the group, e.g. "n_dot_v"
@@ -66,7 +72,8 @@ struct ResultLayout {
 };
 
 // A rectangular block of one table, row-major over the table's dimensions. Numbers (numeric elements,
-// or the numeric fields of each record in field order) go to `values`, texts to `texts`. For a growing
+// or the numeric fields of each record in field order) go to `values`, integers as integers (number.hpp),
+// texts to `texts`. For a growing
 // table offset[0] counts rows within what one work item appends; the runtime moves it to the row where
 // the item's rows start.
 struct Block {
@@ -74,7 +81,7 @@ struct Block {
   std::string table;
   std::vector<std::uint64_t> offset;  // per dimension
   std::vector<std::uint64_t> count;   // per dimension
-  std::vector<double> values = {};
+  std::vector<Number> values = {};
   std::vector<std::string> texts = {};
 
   std::uint64_t elements() const;
@@ -95,7 +102,11 @@ class TableIndex {
   std::map<std::pair<std::string, std::string>, std::uint32_t> by_name_;
 };
 
-// Throws std::logic_error (a bug in the job kind) when a block does not fit its table's declaration.
+// The type of each number of an element, in order: the table's type, or its numeric fields' types.
+std::vector<ValueType> number_types(const Table& table);
+
+// Throws std::logic_error (a bug in the job kind) when a block does not fit its table's declaration: its
+// shape, its counts of numbers and texts, or a number its element type does not hold.
 void check_block(const Block& block, const Table& table);
 
 }  // namespace pbrfit::store

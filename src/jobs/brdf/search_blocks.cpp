@@ -15,8 +15,8 @@ constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 
 void append_log_row(store::Block& log, std::size_t generation, std::size_t island, const IslandStatistics& s,
                     std::uint32_t migrants_in) {
-  log.values.insert(log.values.end(), {double(generation), double(island), s.best_error, s.median_size,
-                                       double(s.infeasible), double(s.abandoned), double(migrants_in)});
+  log.values.insert(log.values.end(), {generation, island, s.best_error, s.median_size, s.infeasible,
+                                       s.abandoned, migrants_in});
 }
 
 // The log rows of the last generation, which no breeding item describes.
@@ -42,7 +42,7 @@ std::vector<store::Block> BrdfSearchWorkload::front_blocks(const StageItem&, con
   if (!record.additions.empty()) {
     store::Block archive{"brdf", "archive", {0}, {record.additions.size()}};
     for (const auto& a : record.additions) {
-      archive.values.insert(archive.values.end(), {a.size(), a.error, double(a.generation)});
+      archive.values.insert(archive.values.end(), {a.size(), a.error, a.generation});
       archive.texts.push_back(expression(a.tree));
     }
     out.push_back(std::move(archive));
@@ -65,8 +65,8 @@ std::vector<store::Block> BrdfSearchWorkload::last_front_blocks(const StageItem&
       operations += node.kind == gp::NodeKind::operation;
       piecewise += node.kind == gp::NodeKind::operation && gp::is_piecewise(node.op);
     }
-    front.values.insert(front.values.end(), {f.size(), double(operations), double(piecewise), f.error, nan, nan,
-                                             double(f.generation), k == knee ? 1.0 : 0.0});
+    front.values.insert(front.values.end(), {f.size(), operations, piecewise, f.error, nan, nan, f.generation,
+                                             k == knee ? 1u : 0u});
     front.texts.insert(front.texts.end(), {expression(f.tree), ""});
   }
   out.push_back(std::move(front));

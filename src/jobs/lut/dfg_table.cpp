@@ -145,8 +145,8 @@ void DfgTable::check_row(const runtime::StageItem&, const Row& row) const {
 std::vector<store::Block> DfgTable::row_blocks(const runtime::StageItem& at, const Row& row) const {
   const WorkItemId id = at.id;
   const std::uint64_t n = n_dot_v_.size();
-  auto row_block = [&](const char* table, std::vector<double> values) {
-    return store::Block{"dfg", table, {id.item, 0}, {1, n}, std::move(values)};
+  auto row_block = [&](const char* table, const std::vector<double>& values) {
+    return store::Block{"dfg", table, {id.item, 0}, {1, n}, store::reals(values)};
   };
   auto cell_block = [&](const char* table, double value) {
     return store::Block{"dfg", table, {id.item}, {1}, {value}};

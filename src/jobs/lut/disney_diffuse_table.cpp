@@ -121,8 +121,8 @@ std::vector<store::Block> DisneyDiffuseTable::row_blocks(const runtime::StageIte
     columns["constant_zh1_ratio_deviation"].push_back(std::abs(brdf::course_disney_zh1_constant_ratio - zh1_ratio));
     columns["constant_zh2_ratio_deviation"].push_back(std::abs(brdf::course_disney_zh2_constant_ratio - zh2_ratio));
   }
-  std::vector<store::Block> out = {{"disney_diffuse", "sh", {id.item, 0, 0}, {1, n, 9}, std::move(sh)}};
-  for (auto& [name, values] : columns) out.push_back({"disney_diffuse", name, {id.item, 0}, {1, n}, std::move(values)});
+  std::vector<store::Block> out = {{"disney_diffuse", "sh", {id.item, 0, 0}, {1, n, 9}, store::reals(sh)}};
+  for (const auto& [name, values] : columns) out.push_back({"disney_diffuse", name, {id.item, 0}, {1, n}, store::reals(values)});
   return out;
 }
 

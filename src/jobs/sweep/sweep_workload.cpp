@@ -100,19 +100,19 @@ std::vector<store::Block> SweepWorkload::cell_blocks(const StageItem& item, cons
   std::vector<store::Block> out;
   for (std::size_t m = 0; m < models_.size(); ++m) {
     const std::string group = group_name(m, cell.level);
-    const auto scalar = [&](const std::string& table, double value) {
+    const auto scalar = [&](const std::string& table, store::Number value) {
       out.push_back({group, table, offset, ones, {value}});
     };
     const ModelFit& fit = fits[m];
     for (std::size_t k = 0; k < fit.parameters.size(); ++k) scalar(models_[m].parameters[k].name, fit.parameters[k]);
     scalar("error", fit.error);
-    scalar("evaluations", double(fit.evaluations));
-    scalar("start", double(static_cast<std::uint8_t>(fit.start)));
-    scalar("global_search", fit.global_ran ? 1.0 : 0.0);
+    scalar("evaluations", fit.evaluations);
+    scalar("start", static_cast<std::uint8_t>(fit.start));
+    scalar("global_search", fit.global_ran ? 1u : 0u);
     std::size_t next = 0;
     for (const auto& output : models_[m].outputs) {
       const auto first = fit.outputs.begin() + std::ptrdiff_t(next);
-      std::vector<double> values(first, first + std::ptrdiff_t(output.components));
+      std::vector<store::Number> values(first, first + std::ptrdiff_t(output.components));
       next += output.components;
       if (output.components == 1) {
         out.push_back({group, output.name, offset, ones, std::move(values)});

@@ -29,9 +29,9 @@ store::Block front_block(const SymregOutput& output, const std::vector<gp::Archi
   for (std::size_t k = 0; k < front.size(); ++k) {
     const auto& entry = front[k];
     const auto m = measure_program(entry.program, output.train, output.test);
-    block.values.insert(block.values.end(), {gp::program_cost(entry.program, costs), double(m.operations),
-                                             double(gp::piecewise_count(entry.program)), m.rmse, m.max_abs_error,
-                                             m.test_rmse, double(entry.generation), k == knee ? 1.0 : 0.0});
+    block.values.insert(block.values.end(), {gp::program_cost(entry.program, costs), m.operations,
+                                             gp::piecewise_count(entry.program), m.rmse, m.max_abs_error,
+                                             m.test_rmse, entry.generation, k == knee ? 1u : 0u});
     block.texts.push_back(expression_text(entry.program, names_of(output)));
     block.texts.push_back(constants_text(entry.program));
   }
@@ -44,7 +44,7 @@ store::Block anchor_block(const SymregOutput& output, std::size_t index, const s
   for (const auto& anchor : anchors) {
     if (anchor.output != index) continue;
     const auto m = measure_program(anchor.program, output.train, output.test);
-    block.values.insert(block.values.end(), {gp::program_cost(anchor.program, costs), double(m.operations), m.rmse,
+    block.values.insert(block.values.end(), {gp::program_cost(anchor.program, costs), m.operations, m.rmse,
                                              m.max_abs_error});
     block.texts.insert(block.texts.end(), {anchor.name, anchor.text});
     ++block.count[0];

@@ -122,14 +122,13 @@ std::vector<store::Block> SymregWorkload::epoch_blocks(const StageItem& at, cons
   const SymregOutput& output = settings_.data->outputs[o];
   const std::uint64_t island = id.item - o * settings_.islands;
   store::Block log{output.name, "log", {0}, {1},
-                   {double(id.stage), double(island), double(epoch.generation), double(epoch.evaluations),
-                    epoch.best_error, double(epoch.front.size())}};
+                   {id.stage, island, epoch.generation, epoch.evaluations, epoch.best_error, epoch.front.size()}};
   std::vector<store::Block> out = {log};
   if (epoch.additions.empty()) return out;
   store::Block archive{output.name, "archive", {0}, {epoch.additions.size()}};
   for (const auto& entry : epoch.additions) {
-    archive.values.insert(archive.values.end(), {entry.fitness.cost, double(live_operations(entry.program)), entry.fitness.error,
-                                                 double(entry.generation), double(island), double(id.stage)});
+    archive.values.insert(archive.values.end(), {entry.fitness.cost, live_operations(entry.program), entry.fitness.error,
+                                                 entry.generation, island, id.stage});
     archive.texts.push_back(expression_text(entry.program, {output.inputs, {}}));
   }
   out.push_back(std::move(archive));

@@ -1,5 +1,7 @@
 #include <catch2/catch_test_macros.hpp>
 
+#include <limits>
+
 #include "pbrfit/core/bytes.hpp"
 
 using namespace pbrfit;
@@ -18,6 +20,20 @@ TEST_CASE("bytes round-trip values, arrays and strings") {
   CHECK(in.get<double>() == 2.5);
   CHECK(in.get_array<double>() == values);
   CHECK(in.get_string() == "héllo");
+  CHECK(in.remaining() == 0);
+}
+
+TEST_CASE("variable-length integers round-trip, small magnitudes in one byte") {
+  const std::vector<std::int64_t> values = {0, -1, 1, -64, 63, -65, std::numeric_limits<std::int64_t>::min(),
+                                            std::numeric_limits<std::int64_t>::max()};
+  ByteWriter out;
+  for (const auto v : values) out.put_signed_varint(v);
+  out.put_varint(std::numeric_limits<std::uint64_t>::max());
+  const Bytes bytes = out.take();
+  CHECK(bytes.size() == 1 + 1 + 1 + 1 + 1 + 2 + 10 + 10 + 10);
+  ByteReader in(bytes);
+  for (const auto v : values) CHECK(in.get_signed_varint() == v);
+  CHECK(in.get_varint() == std::numeric_limits<std::uint64_t>::max());
   CHECK(in.remaining() == 0);
 }
 

@@ -60,7 +60,7 @@ TEST_CASE("a tile's fits land at the tile's texels, one per view, and are determ
   CHECK(blocks[0].group == "ebrdf/diffuse/mip1");
   CHECK(blocks[0].offset == std::vector<std::uint64_t>{0, 2, 0, 0, 0});
   CHECK(blocks[0].count == std::vector<std::uint64_t>{2, 2, 2, 4, 9});
-  CHECK(blocks[1].values == std::vector<double>(2 * 2 * 8, 1.0));  // Lambert: amplitude 1
+  CHECK(blocks[1].values == store::reals(std::vector<double>(2 * 2 * 8, 1.0)));  // Lambert: amplitude 1
   const auto normals = w->blocks({0, 0}, w->compute({{0, 0}, nothing, nothing, 11}));
   REQUIRE(normals.size() == 1);
   CHECK(normals[0].count == std::vector<std::uint64_t>{8, 8, 3});

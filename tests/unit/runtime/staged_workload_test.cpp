@@ -133,11 +133,11 @@ TEST_CASE("a staged workload runs its plan through the runtime's interface") {
   const auto [written, summary, kept] = run_plan(toy);
   // Stage 0: 1, 2. Stage 1 (from items 0, 1, 0 of stage 0): 11, 22, 13. Total: 46.
   REQUIRE(written.size() == 6);
-  CHECK(written[2].values == std::vector<double>{11});
-  CHECK(written[3].values == std::vector<double>{22});
-  CHECK(written[4].values == std::vector<double>{13});
+  CHECK(written[2].values == store::reals(std::vector<double>{11}));
+  CHECK(written[3].values == store::reals(std::vector<double>{22}));
+  CHECK(written[4].values == store::reals(std::vector<double>{13}));
   CHECK(written[4].offset == std::vector<std::uint64_t>{1, 2});  // the step, not the stage number
-  CHECK(written[5].values == std::vector<double>{46});
+  CHECK(written[5].values == store::reals(std::vector<double>{46}));
   CHECK(toy.headline(summary) == "5 results, sum 49");
   CHECK(toy.headline({}) == "0 results, sum 0");
   CHECK(kept.empty());
@@ -249,7 +249,10 @@ TEST_CASE("a cycle repeats its stages, and parts of a stage split its items") {
 
   const auto [blocks, summary, kept] = run_plan(plan);
   std::vector<std::vector<double>> written;
-  for (const auto& block : blocks) written.push_back(block.values);
+  for (const auto& block : blocks) {
+    written.emplace_back();
+    for (const auto& v : block.values) written.back().push_back(v.real());
+  }
   // Step 0: seeds 0, 1, sum 0, scale 2. Step 1: seeds 10, 11, sum 0 + 1 + 2 = 3, scale 42.
   // Step 2: seeds 20, 21, sum 10 + 11 + 42 = 63, scale 82. Last: 82.
   const std::vector<std::vector<double>> expected = {

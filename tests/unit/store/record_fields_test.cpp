@@ -40,7 +40,8 @@ std::string fields_file() {
   info.job_name = "fields";
   info.job_kind = "symreg";
   store::ResultFile file(path, {{out, inner, other}}, info);
-  const std::vector<double> numbers = {0.5, 1, 0, 1e300, 7, 1, 3.25, 4294967295.0, 0};
+  // cost, operations, knee per member; the operations and knees are integers, as their fields are
+  const std::vector<store::Number> numbers = {0.5, 1, 0, 1e300, 7, 1, 3.25, std::uint32_t{4294967295}, 0};
   file.write({{"out", "front", {0}, {3}, numbers, {"x * x", "sin(x) + 0.1", "<b>&\"'\n"}},
               {"out", "plain", {0}, {2}, {1, 2}, {}}},
              store::Progress{});

@@ -1,7 +1,11 @@
 #include <catch2/catch_test_macros.hpp>
 #include <catch2/matchers/catch_matchers_string.hpp>
 
+#include <hdf5.h>
+
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <filesystem>
 #include <fstream>
 
@@ -105,7 +109,7 @@ TEST_CASE("tables keep their declared types: float32, integers, texts, records a
   store::ResultFile file(path, typed_layout(), info());
   std::vector<double> twelve(12);
   for (int i = 0; i < 12; ++i) twelve[i] = 0.1 * i;
-  file.write({{"typed", "single", {0, 0}, {4, 3}, twelve, {}},
+  file.write({{"typed", "single", {0, 0}, {4, 3}, store::reals(twelve), {}},
               {"typed", "counts", {1}, {2}, {7, -8}, {}},
               {"typed", "flags", {0}, {1}, {255}, {}},
               {"typed", "names", {2}, {2}, {}, {"two", "three"}},
@@ -192,4 +196,55 @@ TEST_CASE("the run state is one of four names; any other text in a result file i
     CHECK(store::parse_run_status("R.h5", store::run_status_name(s)) == s);
   CHECK_THROWS_WITH(store::parse_run_status("R.h5", "Complete"),
                     Catch::Matchers::ContainsSubstring("R.h5") && Catch::Matchers::ContainsSubstring("'Complete'"));
+}
+
+// Integers are written as integers: a uint64 beyond 2^53 and the extremes of int64 arrive exactly (as a
+// double they would round), and a real, or an integer the element type cannot hold, is a bug in the kind.
+TEST_CASE("integers reach the file exactly; a real or an out-of-range integer in an integer table is refused") {
+  const auto path = temporary_path("integers.h5");
+  store::Group g;
+  g.name = "n";
+  g.axes = {{"x", {0, 1}, "x"}};
+  g.tables = {{"big", {"x"}, "uint64", ValueType::u64},
+              {"rows", {"row"}, "records", ValueType::f64,
+               {{"low", ValueType::i64, ""}, {"byte", ValueType::u8, ""}, {"real", ValueType::f64, ""}}, true}};
+  store::ResultFile file(path, {{g}}, info());
+  const std::uint64_t big = (std::uint64_t(1) << 60) + 1;
+  const std::int64_t low = std::numeric_limits<std::int64_t>::min() + 1;
+  file.write({{"n", "big", {0}, {2}, {big, std::numeric_limits<std::uint64_t>::max()}, {}},
+              {"n", "rows", {0}, {1}, {low, std::uint8_t{200}, 7}, {}}},
+             progress(1));
+  file.publish();
+
+  const hid_t h5 = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  REQUIRE(h5 >= 0);
+  std::uint64_t bigs[2] = {};
+  const hid_t big_data = H5Dopen2(h5, "n/big", H5P_DEFAULT);
+  CHECK(H5Dread(big_data, H5T_NATIVE_UINT64, H5S_ALL, H5S_ALL, H5P_DEFAULT, bigs) >= 0);
+  CHECK(bigs[0] == big);
+  CHECK(bigs[1] == std::numeric_limits<std::uint64_t>::max());
+  H5Dclose(big_data);
+  const hid_t rows = H5Dopen2(h5, "n/rows", H5P_DEFAULT);
+  const hid_t low_only = H5Tcreate(H5T_COMPOUND, sizeof(std::int64_t));
+  H5Tinsert(low_only, "low", 0, H5T_NATIVE_INT64);
+  std::int64_t read_low = 0;
+  CHECK(H5Dread(rows, low_only, H5S_ALL, H5S_ALL, H5P_DEFAULT, &read_low) >= 0);
+  CHECK(read_low == low);
+  H5Tclose(low_only);
+  H5Dclose(rows);
+  H5Fclose(h5);
+
+  const auto refused = [&](store::Block block, const std::string& why) {
+    try {
+      file.write({std::move(block)}, progress(2));
+      FAIL("accepted");
+    } catch (const std::logic_error& e) {
+      CHECK_THAT(e.what(), Catch::Matchers::ContainsSubstring(why));
+    }
+  };
+  refused({"n", "big", {0}, {1}, {1.0}, {}}, "puts a real into a uint64 element (number 0)");
+  refused({"n", "big", {0}, {1}, {-1}, {}}, "puts an integer out of the range of a uint64 element");
+  refused({"n", "rows", {1}, {1}, {0, 256, 0.5}, {}}, "puts an integer out of the range of a uint8 element (number 1)");
+  refused({"n", "rows", {1}, {1}, {0, 2.0, 0.5}, {}}, "puts a real into a uint8 element (number 1)");
+  CHECK(store::read_table(path, "n/big")[0] == double(big));  // nothing of the refused blocks was written
 }
