@@ -9,7 +9,7 @@
 #include "pbrfit/core/random_stream.hpp"
 #include "pbrfit/gp/evolve.hpp"
 #include "pbrfit/gp/fitness_evaluator.hpp"
-#include "pbrfit/gp/pareto_ranking.hpp"
+#include "pbrfit/gp/pareto.hpp"
 
 namespace pbrfit::gp::detail {
 

@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "pbrfit/core/bytes.hpp"
-#include "pbrfit/gp/pareto_archive.hpp"
+#include "pbrfit/gp/pareto.hpp"
 #include "pbrfit/gp/population.hpp"
 #include "pbrfit/gp/program.hpp"
 

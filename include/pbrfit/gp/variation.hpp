@@ -1,6 +1,6 @@
 #pragma once
 // Variation and selection of linear GP programs: random programs and their parts, mutation, crossover, and
-// tournament selection with parsimony pressure (the alternative to Pareto selection, pareto_ranking.hpp).
+// tournament selection with parsimony pressure (the alternative to Pareto selection, pareto.hpp).
 // Every operator draws its random numbers from the stream it is given, so a program's offspring are a
 // pure function of (parents, stream).
 #include <cstddef>

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <vector>
 
-#include "pbrfit/gp/knee.hpp"
+#include "pbrfit/gp/pareto.hpp"
 
 namespace pbrfit::jobs::brdf {
 namespace {

@@ -6,7 +6,7 @@
 #include <set>
 
 #include "pbrfit/gp/cost_model.hpp"
-#include "pbrfit/gp/knee.hpp"
+#include "pbrfit/gp/pareto.hpp"
 #include "pbrfit/gp/live_code.hpp"
 #include "pbrfit/gp/program_bytes.hpp"
 #include "pbrfit/jobs/symreg/front_measures.hpp"

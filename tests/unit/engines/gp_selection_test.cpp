@@ -5,9 +5,7 @@
 #include <vector>
 
 #include "pbrfit/core/random_stream.hpp"
-#include "pbrfit/gp/knee.hpp"
-#include "pbrfit/gp/pareto_archive.hpp"
-#include "pbrfit/gp/pareto_ranking.hpp"
+#include "pbrfit/gp/pareto.hpp"
 #include "pbrfit/gp/variation.hpp"
 
 using namespace pbrfit::gp;

@@ -10,7 +10,7 @@
 #include "pbrfit/brdf/merl_tabulation.hpp"
 #include "pbrfit/core/bytes.hpp"
 #include "pbrfit/gp/expression_parser.hpp"
-#include "pbrfit/gp/knee.hpp"
+#include "pbrfit/gp/pareto.hpp"
 #include "pbrfit/jobs/brdf/analytic_brdf.hpp"
 #include "pbrfit/jobs/brdf/brdf_inputs.hpp"
 #include "pbrfit/jobs/brdf/candidate_score.hpp"

@@ -1,12 +1,17 @@
-#include "pbrfit/gp/pareto_ranking.hpp"
+#include "pbrfit/gp/pareto.hpp"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <stdexcept>
+#include <vector>
 
 namespace pbrfit::gp {
+
+// ---- Ranking ----
+
 namespace {
 
 // The objectives of every fitness as plain numbers (an unevaluated fitness counts as the worst; objectives
@@ -143,6 +148,99 @@ std::vector<std::size_t> select_survivors(std::span<const Fitness> fitnesses, st
   fill_from_fronts(fitnesses, points, distinct, count, chosen);
   fill_from_fronts(fitnesses, points, duplicates, count, chosen);
   return chosen;
+}
+
+// ---- The archive ----
+
+namespace {
+
+bool listed_before(const Fitness& a, const Fitness& b) {
+  if (a.cost != b.cost) return a.cost < b.cost;
+  if (a.error != b.error) return a.error < b.error;
+  return a.piecewise < b.piecewise;
+}
+
+}  // namespace
+
+ParetoArchive::ParetoArchive(std::size_t objective_count) : objective_count_(objective_count) {
+  if (objective_count < 1 || objective_count > 3) throw std::invalid_argument("an archive has 1 to 3 objectives");
+}
+
+bool ParetoArchive::admits(const Fitness& candidate) const {
+  if (!candidate.evaluated || !std::isfinite(candidate.error)) return false;
+  return std::none_of(entries_.begin(), entries_.end(), [&](const ArchiveEntry& kept) {
+    return dominates(kept.fitness, candidate, objective_count_) ||
+           same_objectives(kept.fitness, candidate, objective_count_);
+  });
+}
+
+bool ParetoArchive::insert(const ArchiveEntry& entry) {
+  const Fitness& candidate = entry.fitness;
+  if (!admits(candidate)) return false;
+  std::erase_if(entries_,
+                [&](const ArchiveEntry& kept) { return dominates(candidate, kept.fitness, objective_count_); });
+  const auto place = std::upper_bound(entries_.begin(), entries_.end(), entry,
+                                      [](const auto& a, const auto& b) { return listed_before(a.fitness, b.fitness); });
+  entries_.insert(place, entry);
+  return true;
+}
+
+void ParetoArchive::insert_all(std::span<const ArchiveEntry> entries) {
+  for (const ArchiveEntry& entry : entries) insert(entry);
+}
+
+// ---- The knee ----
+
+namespace {
+
+double log_error(const Fitness& f) { return std::log10(std::max(f.error, 1e-30)); }
+
+std::size_t most_accurate(std::span<const Fitness> front) {
+  std::size_t best = 0;
+  for (std::size_t m = 1; m < front.size(); ++m) {
+    if (front[m].error < front[best].error ||
+        (front[m].error == front[best].error && front[m].cost < front[best].cost)) {
+      best = m;
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
+std::size_t knee_index(std::span<const Fitness> front) {
+  const std::size_t accurate = most_accurate(front);
+  if (front.size() < 3) return accurate;
+  std::size_t cheap = 0;
+  for (std::size_t m = 1; m < front.size(); ++m) {
+    if (front[m].cost < front[cheap].cost ||
+        (front[m].cost == front[cheap].cost && front[m].error < front[cheap].error)) {
+      cheap = m;
+    }
+  }
+  // Scaled coordinates: x = cost, y = log error; the extremes are (0, 1) (cheap) and (1, 0) (accurate).
+  const double cost_range = front[accurate].cost - front[cheap].cost;
+  const double error_range = log_error(front[cheap]) - log_error(front[accurate]);
+  if (!(cost_range > 0.0) || !(error_range > 0.0)) return accurate;
+  std::size_t knee = accurate;
+  double farthest = 0.0;
+  for (std::size_t m = 0; m < front.size(); ++m) {
+    const double x = (front[m].cost - front[cheap].cost) / cost_range;
+    const double y = (log_error(front[m]) - log_error(front[accurate])) / error_range;
+    const double below_line = 1.0 - x - y;  // proportional to the distance to the line x + y = 1
+    if (below_line > farthest) {
+      farthest = below_line;
+      knee = m;
+    }
+  }
+  return knee;
+}
+
+std::size_t knee_index(std::span<const ArchiveEntry> front) {
+  std::vector<Fitness> fitnesses;
+  fitnesses.reserve(front.size());
+  for (const ArchiveEntry& entry : front) fitnesses.push_back(entry.fitness);
+  return knee_index(fitnesses);
 }
 
 }  // namespace pbrfit::gp
