@@ -5,9 +5,12 @@ MPIRUN ?= mpirun
 # memory only (no probing for network transports) saves about 0.2 s of start-up on one machine.
 MPIRUN_FLAGS ?= $(if $(filter 0,$(shell id -u)),--allow-run-as-root,) --oversubscribe --mca pml ob1 --mca btl self,vader
 
-.PHONY: demo test build web-deps deps bench bench-ltc bench-brdf bench-ebrdf soak clean
+PREFIX ?= /usr/local
 
-demo: build
+.PHONY: demo test build program install deb web-deps deps bench bench-ltc bench-brdf bench-ebrdf soak clean
+
+# Builds only the program (the tests and benchmarks are built by `make test`).
+demo: program
 	$(MPIRUN) $(MPIRUN_FLAGS) -np 2 $(BUILD)/pbrfit run jobs/quickstart.yaml
 	@echo
 	@$(BUILD)/pbrfit status results/quickstart.h5
@@ -59,6 +62,18 @@ web-deps:
 build: deps
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release
 	cmake --build $(BUILD) -j 2
+
+program: deps
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release
+	cmake --build $(BUILD) -j 2 --target pbrfit
+
+# docs/install.md: the program and its shared files under PREFIX (bin/, share/pbrfit, share/doc/pbrfit).
+install: program
+	cmake --install $(BUILD) --prefix $(PREFIX)
+
+# A Debian package of the same files, BUILD/pbrfit_VERSION_ARCH.deb (install it with apt install ./FILE).
+deb: program
+	cd $(BUILD) && cpack -G DEB
 
 deps:
 	.ci/install-deps

@@ -10,7 +10,7 @@ namespace pbrfit::cli {
 
 int main_entry(int argc, char** argv) {
   CLI::App app{"pbrfit: fits approximate models for physically based rendering, as MPI batch jobs"};
-  app.set_version_flag("--version", version);
+  app.set_version_flag("--version", std::string("pbrfit ") + version + " (commit " + build_commit + ")");
   app.require_subcommand(1);
 
   RunOptions run;
