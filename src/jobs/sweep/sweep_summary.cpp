@@ -1,6 +1,8 @@
 // The running summary of a sweep (sweep_workload.hpp): cells done per level, and per model the best and
-// worst error, the evaluations and how often the global search ran. Folded in any order: minima, maxima
-// and integer counts.
+// worst error, the errors' distribution, the evaluations and how often the global search ran. Folded in any
+// order: minima, maxima and integer counts. The headline gives errors as percentiles over the cells (half
+// the cells and 95 % of them at most a bound), not as a range that a few degenerate cells can stretch over
+// dozens of orders of magnitude.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -14,10 +16,37 @@ namespace {
 constexpr std::size_t summary_models = SweepSummary::models;
 constexpr std::size_t summary_levels = SweepSummary::levels;
 
+std::size_t error_bin(double error) {
+  if (!(error > 0.0)) return 0;
+  const double position = std::floor((std::log10(error) - SweepSummary::lowest_decade) * SweepSummary::bins_per_decade);
+  return std::size_t(std::clamp(position, 0.0, double(SweepSummary::error_bins - 1)));
+}
+
+// The upper edge of bin `bin`: every error counted in it is at most this.
+double bin_upper_edge(std::size_t bin) {
+  return std::pow(10.0, SweepSummary::lowest_decade + double(bin + 1) / SweepSummary::bins_per_decade);
+}
+
+// A bound that at least `fraction` of the model's finite errors do not exceed: the upper edge of the bin
+// where the count reaches that fraction (the worst error in the last bin, which has no upper edge).
+double error_bound(const SweepSummary::Model& s, double fraction) {
+  std::uint64_t total = 0;
+  for (const auto count : s.error_counts) total += count;
+  const auto needed = std::uint64_t(std::ceil(fraction * double(total)));
+  std::uint64_t seen = 0;
+  for (std::size_t bin = 0; bin < SweepSummary::error_bins; ++bin) {
+    seen += s.error_counts[bin];
+    if (seen >= needed && seen > 0)
+      return bin + 1 == SweepSummary::error_bins ? s.worst : std::min(bin_upper_edge(bin), s.worst);
+  }
+  return s.worst;
+}
+
 void fold(SweepSummary::Model& s, const ModelFit& fit) {
   if (std::isfinite(fit.error)) {
     s.best = std::min(s.best, fit.error);
     s.worst = std::max(s.worst, fit.error);
+    ++s.error_counts[error_bin(fit.error)];
   } else {
     ++s.non_finite;
   }
@@ -46,9 +75,14 @@ std::string SweepWorkload::headline_of(const Summary& sum) const {
   for (std::size_t m = 0; m < models_.size() && m < summary_models; ++m) {
     const SweepSummary::Model& s = sum.model[m];
     char part[200];
-    std::snprintf(part, sizeof part, "; %s error %.3g..%.3g, %.0f evaluations/cell, global search in %.0f%%",
-                  models_[m].name.c_str(), s.best, s.worst, double(s.evaluations) / double(sum.cells),
-                  100.0 * double(s.global_runs) / double(sum.cells));
+    if (s.non_finite < sum.cells)
+      std::snprintf(part, sizeof part, "; %s error: half the cells <= %.3g, 95%% <= %.3g", models_[m].name.c_str(),
+                    error_bound(s, 0.5), error_bound(s, 0.95));
+    else
+      std::snprintf(part, sizeof part, "; %s error: none finite", models_[m].name.c_str());
+    text += part;
+    std::snprintf(part, sizeof part, ", %.0f evaluations/cell, global search in %.0f%%",
+                  double(s.evaluations) / double(sum.cells), 100.0 * double(s.global_runs) / double(sum.cells));
     text += part;
     if (s.non_finite) text += ", " + std::to_string(s.non_finite) + " cells without a finite error";
   }

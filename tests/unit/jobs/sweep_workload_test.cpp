@@ -1,6 +1,8 @@
 // The sweep workload as the runtime sees it: stages and items from the schedule, warm starts passed as
 // item inputs from kept results, results placed at their cell in a group per model and level.
 #include <catch2/catch_test_macros.hpp>
+#include <cstdio>
+#include <algorithm>
 
 #include <cmath>
 
@@ -85,4 +87,33 @@ TEST_CASE("a sweep's results are a pure function of the job, its item and its in
   CHECK(found_error);
   CHECK_THROWS_AS(w.blocks({4, 1}, Bytes(3)), RunError);
   CHECK(w.headline({}) == "no cells fitted yet");
+}
+
+// The headline gives the error as bounds that half and 95 % of the cells do not exceed (percentiles by
+// 1/8-decade bins: true bounds, at most 1/8 decade above the exact percentiles), not a min..max range.
+TEST_CASE("a sweep's headline bounds the errors of half and 95 % of the cells") {
+  const auto w = workload();
+  const auto all = run_all(w);
+  Bytes summary;
+  std::vector<double> errors;
+  for (const auto& [id, result] : all) {
+    w.fold_summary(summary, id, result);
+    for (const auto& block : w.blocks(id, result))
+      if (block.table == "error") errors.push_back(block.values[0].real());
+  }
+  std::sort(errors.begin(), errors.end());
+  const std::string headline = w.headline(summary);
+  INFO(headline);
+  const auto at = headline.find("error: half the cells <= ");
+  REQUIRE(at != std::string::npos);
+  double half = 0.0, most = 0.0;
+  REQUIRE(std::sscanf(headline.c_str() + at, "error: half the cells <= %lf, 95%% <= %lf", &half, &most) == 2);
+  const double exact_half = errors[std::size_t(std::ceil(0.5 * double(errors.size()))) - 1];
+  const double exact_most = errors[std::size_t(std::ceil(0.95 * double(errors.size()))) - 1];
+  const double bin = std::pow(10.0, 1.0 / 8.0) * 1.005;  // a bin, and the headline's 3 digits
+  CHECK(half >= exact_half / 1.005);  // printed to 3 digits
+  CHECK(half <= exact_half * bin);
+  CHECK(most >= exact_most / 1.005);
+  CHECK(most <= exact_most * bin);
+  CHECK(headline.find("..") == std::string::npos);
 }

@@ -24,16 +24,22 @@
 namespace pbrfit::jobs::sweep {
 
 // The running summary (sweep_summary.cpp): cells done per level; per model the best and worst error, the
-// evaluations and how often the global search ran.
+// errors' distribution (for the headline's percentiles), the evaluations and how often the global search ran.
 struct SweepSummary {
   static constexpr std::size_t models = 8;
   static constexpr std::size_t levels = 32;
+  // Finite errors counted by log10 in bins of 1/8 decade from 1e-40 to 1e+40; smaller errors (zero too)
+  // count in the first bin, larger ones in the last.
+  static constexpr int bins_per_decade = 8;
+  static constexpr int lowest_decade = -40;
+  static constexpr std::size_t error_bins = 80 * bins_per_decade;
   struct Model {
     double best = std::numeric_limits<double>::infinity();
     double worst = 0.0;
     std::uint64_t evaluations = 0;
     std::uint64_t global_runs = 0;
     std::uint64_t non_finite = 0;
+    std::uint32_t error_counts[error_bins] = {};
   };
   std::uint64_t cells = 0;
   std::uint64_t level_cells[levels] = {};
