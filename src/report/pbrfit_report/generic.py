@@ -1,6 +1,7 @@
 # The generic report, for every job kind: the run summary, then per group (in path order) its
 # description, attributes, axes, a summary of its numeric tables, its anchor comparisons, a figure per
-# numeric table (line, map or small multiples by rank; errors also a histogram) and the rows of its
+# numeric table (line, map or small multiples by rank; errors also a histogram; a table whose computed
+# cells all hold one value gets a line saying so instead) and the rows of its
 # record, text and growing tables. Kinds add sections by subclassing Renderer (kinds/). A table that
 # cannot be drawn gets a note instead of its figure; only RunProblems (cannot write) end the report.
 import numpy as np
@@ -8,7 +9,7 @@ import numpy as np
 from . import html_page as page
 from .anchors import comparisons, partners
 from .attributes import attribute_texts, string_attribute
-from .colour_scale import colour_scale
+from .colour_scale import colour_scale, finite_values
 from .heat_map import heat_map_figure
 from .histogram import histogram_figure
 from .line_plot import line_figure
@@ -96,6 +97,10 @@ class Renderer:
         return []
 
     def table_figures(self, report, group, table, scale_groups):
+        finite = finite_values(table.grid_values()[0])
+        if finite.size > 1 and finite.min() == finite.max() and table.role != "start":
+            return [page.paragraph(f"{table.path}: every computed cell is {number(finite[0])} ({table.description}); "
+                                   "no figure", "note")]
         shared = [t for t in group.tables if t.name in scale_groups.get(table.name, {table.name})]
         values = [t.grid_values()[0] for t in shared]
         scale = colour_scale(table.role, values, table.attribute("labels"))

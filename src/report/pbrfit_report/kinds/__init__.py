@@ -21,3 +21,4 @@ from . import lut  # noqa: E402,F401 - registers itself
 from . import symreg  # noqa: E402,F401 - registers itself
 from . import brdf_search  # noqa: E402,F401 - registers itself
 from . import ebrdf  # noqa: E402,F401 - registers itself
+from . import sweep  # noqa: E402,F401 - registers itself

@@ -1,0 +1,125 @@
+# `sweep` results (docs/results-sweep.md): first what a reader asks of a fitted table, per model at the
+# requested grid (the last level): how large its errors are over the cells (median, 95th percentile,
+# worst; relative errors say so in their descriptions), how it compares with a published model cell by
+# cell (the ratio map), and, for GGX LTC tables, the fitted lobe beside its target at a few cells. The
+# generic sections follow for every level; vector outputs (a matrix or texture per cell, for engines:
+# `pbrfit export`) are listed there but not drawn as slices.
+import numpy as np
+
+from ... import html_page as page
+from ...anchors import comparisons
+from ...attributes import string_attribute
+from ...generic import Renderer, guarded
+from ...statistics import number
+from .. import register
+from .lobe_figure import GGX_MODELS, lobe_figure
+from .ratio_figure import error_ratio, ratio_figure
+
+ERROR_ROLES = ("error",)
+
+
+def _final_groups(report):
+    return [g for g in report.groups if string_attribute(g.node, "final_level") == "true"]
+
+
+def _percentile(values, q):
+    finite = values[np.isfinite(values)]
+    return float(np.percentile(finite, q)) if finite.size else float("nan")
+
+
+def _error_rows(group):
+    rows = []
+    for t in group.tables:
+        if t.role not in ERROR_ROLES or t.kind != "grid":
+            continue
+        values = t.grid_values()[0]
+        finite = int(np.count_nonzero(np.isfinite(values)))
+        rows.append([t.name, str(finite), number(_percentile(values, 50)), number(_percentile(values, 95)),
+                     number(_percentile(values, 100)), t.description])
+    return rows
+
+
+def _comparison_rows(group):
+    by_name = {t.name: t for t in group.tables}
+    rows = []
+    for c in comparisons(group):
+        if c.problem or not c.cells:
+            continue
+        ratio = error_ratio(by_name[c.ours_table].grid_values()[0], by_name[c.anchor_table].grid_values()[0])
+        finite = ratio[np.isfinite(ratio)]
+        rows.append([c.ours_table, c.anchor, str(c.cells), f"{100 * c.fraction():.1f} %",
+                     number(np.median(finite)) if finite.size else "–",
+                     number(np.percentile(finite, 95)) if finite.size else "–"])
+    return rows
+
+
+def _figure(report, make, alt, caption):
+    name = report.figures.draw(make)
+    return [page.image_figure(name, alt, caption)] if name else []
+
+
+def _lobe_parts(report, group):
+    model = string_attribute(group.node, "model")
+    by_name = {t.name: t for t in group.tables}
+    if model not in GGX_MODELS or "matrix" not in by_name or "norm" not in by_name:
+        return []
+    matrix_table = by_name["matrix"]
+    names = [a.name if a is not None else "" for a in matrix_table.axes]
+    if names[:2] != ["sqrt_one_minus_cos", "roughness"]:
+        return []
+    matrix, norm = matrix_table.grid_values()[0], by_name["norm"].grid_values()[0]
+    if any(s != 1 for s in matrix_table.grid_values()[1]):
+        return []
+    roughness, view_x = matrix_table.axis_values(1), matrix_table.axis_values(0)
+    return _figure(report, lambda: lobe_figure(matrix, norm, roughness, view_x), f"{group.path} lobes",
+                   f"{group.path}: the fitted LTC (dashed) beside GGX times the cosine (solid) in the plane of "
+                   "incidence, each panel scaled to the target's peak")
+
+
+def _group_quality(report, group):
+    parts = [page.heading(3, group.path)]
+    errors = _error_rows(group)
+    if errors:
+        parts.append(page.table(["error", "cells", "median", "95th percentile", "worst", "what it measures"],
+                                errors, (1, 2, 3, 4)))
+    compared = _comparison_rows(group)
+    if compared:
+        parts.append(page.paragraph("Cell by cell against the published model: the share of cells where ours is "
+                                    "at most theirs, and our error over theirs."))
+        parts.append(page.table(["ours", "published", "cells", "ours <= theirs", "median ratio",
+                                 "95th percentile ratio"], compared, (2, 3, 4, 5)))
+        by_name = {t.name: t for t in group.tables}
+        for c in comparisons(group):
+            if not c.problem and c.cells and by_name[c.ours_table].grid_values()[0].ndim == 2:
+                parts += guarded(lambda c=c: _figure(
+                    report, lambda: ratio_figure(by_name[c.ours_table], by_name[c.anchor_table], c.anchor),
+                    f"{c.ours_table} over {c.anchor_table}",
+                    f"{group.path}: {c.ours_table} over {c.anchor_table} per cell (log scale; blue: ours smaller)"),
+                    group.path)
+    parts += guarded(lambda: _lobe_parts(report, group), group.path)
+    for table in group.tables:
+        table.forget_values()
+    return parts
+
+
+@register("sweep")
+class SweepRenderer(Renderer):
+    def kind_sections(self, report):
+        groups = _final_groups(report)
+        if not groups:
+            return []
+        parts = [page.heading(2, "How good the fit is", "quality"),
+                 page.paragraph("Per model at the requested grid: the errors over its cells, the comparison with "
+                                "a published model where the result has one, and for GGX tables the fitted "
+                                "lobes. Every level's tables follow below.")]
+        for group in groups:
+            parts += _group_quality(report, group)
+        return [page.section(parts)]
+
+    def table_figures(self, report, group, table, scale_groups):
+        names = [a.name if a is not None else "" for a in table.axes]
+        if names and names[-1].endswith("_component"):
+            size = table.extent()[-1]
+            return [page.paragraph(f"{table.path}: {size} values per cell ({table.description}); not drawn: read "
+                                   "them with h5py, or as a texture with pbrfit export", "note")]
+        return super().table_figures(report, group, table, scale_groups)

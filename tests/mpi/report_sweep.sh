@@ -1,0 +1,69 @@
+#!/usr/bin/env bash
+# `pbrfit report` of a sweep (an LTC table of GGX on 2 levels) opens with what the fit achieved at the
+# requested grid: each error's median, 95th percentile and worst cell, the comparison with the published
+# table (share of cells where ours is at most theirs, ratio maps) and the fitted lobes beside GGX, whose
+# formulas must agree with the fitter (the LTC of a cell close to its GGX lobe, the transposed matrix far
+# from it). Vector outputs (matrices, textures) are listed but not drawn; a table whose cells all hold one
+# value gets a line instead of a map.
+source "$(dirname "$0")/lib/common.bash"
+source "$PBRFIT_SOURCE_DIR/tests/mpi/lib/report_checks.bash"
+
+cp "$PBRFIT_SOURCE_DIR/tests/jobs/small-sweep.yaml" job.yaml
+run_ranks 2 run job.yaml -q
+expect_status 0
+set +e
+"$PBRFIT" report result.h5 >out.txt 2>err.txt; STATUS=$?
+set -e
+expect_status 0 "$(cat err.txt)"
+expect_tables_mentioned result.h5 result.report
+expect_valid_images result.report 10
+page=result.report/index.html
+
+note "the quality section comes first, for the last level only"
+grep -q 'id="quality"' "$page" || fail "no 'How good the fit is' section"
+quality=$(sed -n '/id="quality"/,/id="group-1"/p' "$page")
+for wanted in '<td>error_l2</td>' '<td>polygon_error_median</td>' '95th percentile' 'ours &lt;= theirs' \
+  'alt="error_l2 over published_error_l2"' 'alt="/ltc/level1 lobes"'; do
+  grep -qF -- "$wanted" <<<"$quality" || fail "the quality section lacks $wanted"
+done
+if grep -qF '/ltc/level0' <<<"$quality"; then fail "the quality section shows the coarse level"; fi
+
+note "vector outputs listed, not drawn; one-value tables get a line"
+grep -qF '/ltc/level1/ltc_1: 4 values per cell' "$page" || fail "no note for the ltc_1 texture"
+if grep -qF 'alt="/ltc/level1/ltc_1"' "$page"; then fail "ltc_1 is drawn as slices"; fi
+"$H5PY_PYTHON" - result.h5 "$page" <<'PY' || fail "a one-value table is drawn, or its line is missing"
+import sys, h5py, numpy as np
+page = open(sys.argv[2]).read()
+with h5py.File(sys.argv[1], "r") as f:
+    for name, table in f["ltc/level1"].items():
+        if h5py.h5ds.is_scale(table.id) or table.dtype.names or table.dtype.kind not in "fiu":
+            continue
+        finite = np.asarray(table[()], dtype=float)
+        finite = finite[np.isfinite(finite)]
+        constant = finite.size > 1 and finite.min() == finite.max() and table.attrs.get("role", b"") not in (b"start", "start")
+        noted = f"/ltc/level1/{name}: every computed cell is" in page
+        drawn = f'alt="/ltc/level1/{name}"' in page
+        if constant != noted or (constant and drawn):
+            sys.exit(f"{name}: constant {constant}, line {noted}, drawn {drawn}")
+PY
+
+note "the lobe figure's formulas agree with the fitter"
+PYTHONPATH=$(dirname "$PBRFIT")/share/pbrfit/report "$H5PY_PYTHON" - result.h5 <<'PY' || fail "the report's LTC lobe disagrees with GGX"
+import sys, h5py, numpy as np
+from pbrfit_report.kinds.sweep.lobe_figure import ggx_target, ltc_lobe
+with h5py.File(sys.argv[1], "r") as f:
+    g = f["ltc/level1"]
+    matrix, norm = g["matrix"][()], g["norm"][()]
+    x, r = g["sqrt_one_minus_cos"][()], g["roughness"][()]
+theta = np.linspace(-np.pi / 2, np.pi / 2, 2001)
+for vi, ri in ((2, 4), (4, 6), (6, 3)):
+    cos_view = np.cos(min(np.arccos(1 - x[vi] ** 2), 1.57))
+    target = ggx_target(r[ri] ** 2, cos_view, theta)
+    m = matrix[vi, ri].reshape(3, 3)
+    ours = np.abs(ltc_lobe(m, norm[vi, ri], theta) - target).sum() / target.sum()
+    transposed = np.abs(ltc_lobe(m.T, norm[vi, ri], theta) - target).sum() / target.sum()
+    print(f"cell ({vi}, {ri}): relative L1 {ours:.3f}, transposed {transposed:.3f}")
+    if not (ours < 0.15 and transposed > 2 * ours):
+        sys.exit(1)
+PY
+echo "PASS"
