@@ -6,15 +6,7 @@ source "$(dirname "$0")/lib/common.bash"
 source "$PBRFIT_SOURCE_DIR/tests/mpi/lib/report_checks.bash"
 
 note "a finished small DFG table"
-cp "$PBRFIT_SOURCE_DIR/tests/jobs/small-dfg.yaml" job.yaml
-run_ranks 2 run job.yaml -q
-expect_status 0
-set +e
-"$PBRFIT" report result.h5 >out.txt 2>err.txt; STATUS=$?
-set -e
-expect_status 0 "$(cat err.txt)"
-[[ ! -s err.txt ]] || { cat err.txt; fail "report wrote to stderr"; }
-grep -q "result.report/index.html" out.txt || { cat out.txt; fail "report does not say where the page is"; }
+report_of_test_job small-dfg.yaml
 expect_tables_mentioned result.h5 result.report
 expect_valid_images result.report "$TABLES"   # every lut table is a map or a curve
 grep -q "small-dfg" result.report/index.html || fail "the page does not name the job"

@@ -8,13 +8,7 @@
 source "$(dirname "$0")/lib/common.bash"
 source "$PBRFIT_SOURCE_DIR/tests/mpi/lib/report_checks.bash"
 
-cp "$PBRFIT_SOURCE_DIR/tests/jobs/small-sweep.yaml" job.yaml
-run_ranks 2 run job.yaml -q
-expect_status 0
-set +e
-"$PBRFIT" report result.h5 >out.txt 2>err.txt; STATUS=$?
-set -e
-expect_status 0 "$(cat err.txt)"
+report_of_test_job small-sweep.yaml
 expect_tables_mentioned result.h5 result.report
 expect_valid_images result.report 10
 page=result.report/index.html

@@ -45,3 +45,17 @@ PY
 )
   (( TABLES > 0 )) || fail "$result has no tables"
 }
+
+# Runs tests/jobs/JOB (whose output is result.h5) on 2 ranks and reports it: result.report/index.html,
+# nothing on stderr, and the page's path said on stdout.
+report_of_test_job() {
+  cp "$PBRFIT_SOURCE_DIR/tests/jobs/$1" job.yaml
+  run_ranks 2 run job.yaml -q
+  expect_status 0
+  set +e
+  "$PBRFIT" report result.h5 >out.txt 2>err.txt; STATUS=$?
+  set -e
+  expect_status 0 "$(cat err.txt)"
+  [[ ! -s err.txt ]] || { cat err.txt; fail "report wrote to stderr"; }
+  grep -q "result.report/index.html" out.txt || { cat out.txt; fail "report does not say where the page is"; }
+}
