@@ -44,6 +44,10 @@ int main_entry(int argc, char** argv) {
   report_cmd->add_option("result", report.result_file, "result file (HDF5)")->required();
   report_cmd->add_option("-o,--out", report.out_dir, "directory for index.html and its figures (default: the result "
                          "path with .h5 replaced by .report)");
+  report_cmd->add_option("--watch", report.watch_seconds,
+                         "while the job runs, make the report again every SECONDS (the page reloads itself); "
+                         "ends when the job stops")
+      ->check(CLI::Range(1.0, 86400.0));
 
   ExportOptions export_options;
   auto* export_cmd = app.add_subcommand("export", "a table (lut, sweep, ebrdf) as a texture or source file an engine "

@@ -1,4 +1,4 @@
-// `pbrfit report RESULT.h5 [--out DIR]`: checks here that RESULT is a readable pbrfit result (the same
+// `pbrfit report RESULT.h5 [--out DIR] [--watch SECONDS]`: checks here that RESULT is a readable pbrfit result (the same
 // one-line refusals as `status`, exit 2), then runs the report package ($PBRFIT_REPORT_DIR, else report/ in
 // the share directory of store/share_directory.hpp) with /usr/bin/python3 (or $PBRFIT_PYTHON), isolated
 // from the user's Python settings, and returns its exit code: 0, 2 or 3 with its own one-line message. An
@@ -39,6 +39,7 @@ std::string report_package() {
 std::vector<std::string> report_arguments(const ReportOptions& options) {
   std::vector<std::string> argv = {setting("PBRFIT_PYTHON", default_python), "-B", "-E", "-s", report_package()};
   if (!options.out_dir.empty()) argv.push_back("--out=" + options.out_dir);
+  if (options.watch_seconds > 0) argv.push_back("--watch=" + std::to_string(options.watch_seconds));
   argv.insert(argv.end(), {"--", options.result_file});
   return argv;
 }

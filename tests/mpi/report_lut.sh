@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # `pbrfit report` of a lut result: a finished small DFG table (2 ranks) gives RESULT.report/index.html
 # whose every image is a valid PNG and which names every table; a report of a job still running works
-# too and shows the cells not yet computed.
+# too and shows the cells not yet computed; with --watch it is remade while the job runs (the page
+# reloading itself) and a last time, without reloading, once the job has stopped.
 source "$(dirname "$0")/lib/common.bash"
 source "$PBRFIT_SOURCE_DIR/tests/mpi/lib/report_checks.bash"
 
@@ -33,8 +34,26 @@ expect_status 0 "$(cat err.txt)"
 expect_valid_images live 1
 grep -q "not yet computed" live/index.html || fail "the report of a running job shows no cell as not yet computed"
 grep -q "running" live/index.html || fail "the report of a running job does not say it runs"
+if grep -q 'http-equiv="refresh"' live/index.html; then fail "a report made once reloads itself"; fi
 background_running || fail "the job finished before the report was made; make the test job longer"
+
+note "--watch: remade while the job runs (the page reloads itself), a last time when it stops"
+"$PBRFIT" report long.h5 --out watched --watch 1 >watch.txt 2>watch-err.txt &
+watcher=$!
+for _ in $(seq 600); do
+  [[ $(grep -c "the job is running, again in 1 s" watch.txt) -ge 2 ]] && break
+  sleep 0.1
+done
+[[ $(grep -c "the job is running, again in 1 s" watch.txt) -ge 2 ]] || { cat watch.txt watch-err.txt; fail "the report was not remade while the job ran"; }
+grep -q '<meta http-equiv="refresh" content="1">' watched/index.html || fail "the watched page does not reload itself"
 kill -TERM $(rank_pids)
 wait_background
 expect_status 75
+set +e
+timeout 60 tail --pid=$watcher -f /dev/null; wait $watcher; STATUS=$?
+set -e
+expect_status 0 "$(cat watch-err.txt)"
+tail -1 watch.txt | grep -q "^report: watched/index.html ([0-9]* figures)$" || { cat watch.txt; fail "no last line once the job stopped"; }
+if grep -q 'http-equiv="refresh"' watched/index.html; then fail "the last page still reloads itself"; fi
+grep -q "interrupted" watched/index.html || fail "the last page does not show the job stopped"
 echo "PASS"

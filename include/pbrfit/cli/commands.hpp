@@ -30,6 +30,7 @@ struct SubmitOptions {
 struct ReportOptions {
   std::string result_file;
   std::string out_dir;  // empty: the result path with .h5 replaced by .report
+  double watch_seconds = 0.0;  // > 0: remade at this interval while the job runs
 };
 
 struct ExportOptions {

@@ -1,12 +1,15 @@
-# `pbrfit report RESULT.h5 [--out DIR]`, the Python side: writes DIR/index.html and its figures, prints
-# one line saying where, and returns the exit code: 0, 2 (the result cannot be read: "FILE: error: ..."),
-# 3 (the report cannot be made: "pbrfit: error: ..."). Whatever happens, at most one line goes to stderr:
-# library warnings are silenced and everything raised becomes that line, never a traceback.
+# `pbrfit report RESULT.h5 [--out DIR] [--watch SECONDS]`, the Python side: writes DIR/index.html and its
+# figures, prints one line saying where, and returns the exit code: 0, 2 (the result cannot be read: "FILE:
+# error: ..."), 3 (the report cannot be made: "pbrfit: error: ..."). Whatever happens, at most one line goes
+# to stderr: library warnings are silenced and everything raised becomes that line, never a traceback.
+# With --watch, while the job's state is `running` the report is made again every SECONDS (a line each
+# time) and the page reloads itself at that interval; the last report, once the job has stopped, does not.
 import argparse
 import contextlib
 import io
 import os
 import sys
+import time
 import warnings
 
 from .problems import EXIT_INVALID_INPUT, EXIT_RUN_FAILURE, EXIT_SUCCESS, InputProblem, RunProblem, one_line
@@ -21,10 +24,12 @@ def _parse(argv):
     parser = _Arguments(prog="pbrfit report", add_help=False)
     parser.add_argument("result")
     parser.add_argument("--out", default="")
+    parser.add_argument("--watch", type=float, default=0.0)
     return parser.parse_args(argv)
 
 
-def _make_report(result_path, out):
+def _make_report(result_path, out, watch=0.0):
+    """(index path, figures written, the job's state)."""
     os.environ.setdefault("MPLBACKEND", "Agg")
     import matplotlib
     matplotlib.use("Agg")
@@ -43,15 +48,16 @@ def _make_report(result_path, out):
         report = Report(file, result_path, walk(file), FigureWriter(directory))
         parts = renderer_for(string_attribute(file, "job_kind")).render(report)
         title = "pbrfit report: " + string_attribute(file, "job_name", "?")
-        index = report_directory.write_index(directory, document(title, parts))
+        state = string_attribute(file, "state")
+        refresh = watch if watch > 0 and state == "running" else 0
+        index = report_directory.write_index(directory, document(title, parts, refresh))
     report.figures.remove_stale()
-    return index, len(report.figures.written)
+    return index, len(report.figures.written), state
 
 
-def _run(argv):
-    args = _parse(argv)
+def _run(args):
     try:
-        return _make_report(args.result, args.out)
+        return _make_report(args.result, args.out, args.watch)
     except (InputProblem, RunProblem):
         raise
     except ImportError as error:
@@ -63,12 +69,23 @@ def _run(argv):
         raise RunProblem(f"cannot make the report of {args.result}: {type(error).__name__}: {error}") from error
 
 
+def _report_line(index, figures, state, watch):
+    line = f"report: {index} ({figures} figure{'s' if figures != 1 else ''})"
+    return line + (f"; the job is running, again in {watch:g} s" if watch > 0 and state == "running" else "")
+
+
 def main(argv):
     warnings.simplefilter("ignore")
     captured = io.StringIO()
     try:
         with contextlib.redirect_stderr(captured):
-            index, figures = _run(argv)
+            args = _parse(argv)
+            while True:
+                index, figures, state = _run(args)
+                if args.watch <= 0 or state != "running":
+                    break
+                print(one_line(_report_line(index, figures, state, args.watch)), flush=True)
+                time.sleep(args.watch)
     except InputProblem as problem:
         print(problem.line(), file=sys.stderr)
         return EXIT_INVALID_INPUT
@@ -78,5 +95,5 @@ def main(argv):
     except KeyboardInterrupt:
         print("pbrfit: error: report interrupted", file=sys.stderr)
         return EXIT_RUN_FAILURE
-    print(one_line(f"report: {index} ({figures} figure{'s' if figures != 1 else ''})"))
+    print(one_line(_report_line(index, figures, state, 0)))
     return EXIT_SUCCESS

@@ -72,7 +72,9 @@ def section(markup_parts):
     return "<section>" + "\n".join(markup_parts) + "</section>"
 
 
-def document(title, markup_parts):
-    return ("<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+def document(title, markup_parts, refresh_seconds=0):
+    """The page; with refresh_seconds > 0 the browser reloads it at that interval (a report being remade)."""
+    refresh = f"<meta http-equiv=\"refresh\" content=\"{refresh_seconds:g}\">\n" if refresh_seconds > 0 else ""
+    return ("<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n" + refresh +
             f"<title>{escape(title)}</title>\n<style>{STYLE}</style>\n</head>\n<body>\n"
             + "\n".join(markup_parts) + "\n</body>\n</html>\n")
