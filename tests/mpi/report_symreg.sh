@@ -2,7 +2,8 @@
 # `pbrfit report` of symreg results: Nguyen-5 (tests/jobs/small-symreg.yaml, seed 2: its front has a
 # recurring sub-expression) with an anchor whose name holds HTML special characters, and a regression of
 # two tables of a pbrfit result (two inputs on a grid, two outputs). Every image is a valid PNG (a front,
-# a residual and a log figure per output), the front table lists every member's whole expression, the
+# the knee typeset, a residual and a log figure per output), the front table lists every member's expression
+# with its constants rounded (the printed RMSE unchanged) and its exact text a click away, the
 # anchor appears beside our best member at equal or lower cost (checked against the file), the recurring
 # sub-expressions are listed, every text is escaped; a job still running shows no front yet, and its log.
 source "$(dirname "$0")/lib/common.bash"
@@ -17,7 +18,8 @@ report_ok() {
   [[ ! -s err.txt ]] || { cat err.txt; fail "report wrote to stderr"; }
 }
 
-# Exit 0 when every text the Python snippet prints (a line each) is in the page, escaped, as a whole cell.
+# Exit 0 when every text the Python snippet prints (a line each) is in the page, escaped, as a whole cell
+# or as the exact text behind a cell's readable form.
 cells_in_page() {
   local page=$1 snippet=$2
   "$H5PY_PYTHON" - "$page" <<PY
@@ -25,7 +27,8 @@ import html, sys, h5py
 page = open(sys.argv[1]).read()
 texts = []
 $snippet
-missing = [t for t in texts if "<td>" + html.escape(t) + "</td>" not in page]
+missing = [t for t in texts if "<td>" + html.escape(t) + "</td>" not in page and
+           "<code>" + html.escape(t) + "</code></details></td>" not in page]
 print("\n".join("missing: " + t for t in missing))
 sys.exit(1 if missing or not texts else 0)
 PY
@@ -38,8 +41,9 @@ echo '  anchors: [{name: "exact <&> \"formula\"", expression: "sin(x*x) * cos(x)
 report_ok result.h5 page
 html=page/index.html
 expect_tables_mentioned result.h5 page
-expect_valid_images page 3
-[[ $IMAGES -eq 3 ]] || fail "$IMAGES images, expected 3 (front, residuals, log)"
+expect_valid_images page 4
+[[ $IMAGES -eq 4 ]] || fail "$IMAGES images, expected 4 (knee formula, front, residuals, log)"
+grep -qF 'alt="/y knee formula"' "$html" || fail "the knee is not typeset"
 cells_in_page "$html" 'texts = [e.decode() for e in h5py.File("result.h5", "r")["y/front"]["expression"]]' ||
   fail "the front table does not list every member's expression"
 cells_in_page "$html" 'texts = [s.decode() for s in h5py.File("result.h5", "r")["subexpressions/recurring"]["subexpression"]]' ||
@@ -60,16 +64,46 @@ knee=$("$H5PY_PYTHON" -c 'import h5py, numpy; print(int(numpy.flatnonzero(h5py.F
 grep -q "the knee (the default of pbrfit export) is member $knee: " "$html" || fail "the knee is not named"
 note "$IMAGES images; knee member $knee; the anchor compared with $best"
 
+
 note "two tables of a pbrfit result: two inputs on a grid, two outputs"
 cp "$PBRFIT_SOURCE_DIR/tests/jobs/small-dfg.yaml" dfg.yaml
 "$PBRFIT" run dfg.yaml -q --output dfg.h5
 job_from tests/jobs/small-symreg.yaml tables.yaml "s|^  dataset: .*|  dataset: {result: dfg.h5, tables: [dfg/scale, dfg/bias]}|" \
-  "s/generations: 100/generations: 10/"
+  "s/generations: 100/generations: 10/" "s/constant_probability: 0/constant_probability: 0.3/"
 "$PBRFIT" run tables.yaml -q --output tables.h5
 report_ok tables.h5 tables
 expect_tables_mentioned tables.h5 tables
-expect_valid_images tables 6
-[[ $IMAGES -eq 6 ]] || fail "$IMAGES images, expected 6 (3 per output)"
+expect_valid_images tables 8
+[[ $IMAGES -eq 8 ]] || fail "$IMAGES images, expected 8 (4 per output)"
+
+note "readable expressions: fewer digits, the same printed RMSE on the training rows, the exact text a click away"
+PYTHONPATH=$(dirname "$PBRFIT")/share/pbrfit/report "$H5PY_PYTHON" - tables.h5 tables/index.html <<'PY' || fail "a readable expression is wrong"
+import html, sys, h5py, numpy as np
+from pbrfit_report.kinds.symreg.readable import Expression, rmse
+page = open(sys.argv[2]).read()
+shorter = members = 0
+with h5py.File(sys.argv[1], "r") as f:
+    for output in ("scale", "bias"):
+        g = f[output]
+        inputs = [n.strip() for n in g.attrs["inputs"].decode().split(",")] if isinstance(g.attrs["inputs"], bytes) \
+            else [n.strip() for n in g.attrs["inputs"].split(",")]
+        front, rows = g["front"][()], g["knee_prediction"][()]
+        columns, target = {n: rows[n] for n in inputs}, rows["target"]
+        for member in front:
+            members += 1
+            exact = member["expression"].decode()
+            marker = "<code>" + html.escape(exact) + "</code>"
+            if marker not in page:
+                assert "<td>" + html.escape(exact) + "</td>" in page, exact  # nothing to round: shown as found
+                continue
+            shown = html.unescape(page.split(marker)[0].rsplit("<td>", 1)[-1].split("<details>")[0])
+            assert len(shown) < len(exact), (shown, exact)
+            value = rmse(Expression(shown, inputs), columns, target)
+            assert f"{value:.4g}" == f"{member['rmse']:.4g}", (shown, value, member["rmse"])
+            shorter += 1
+print(f"{shorter} of {members} members shown rounded, each with the file's RMSE to 4 digits")
+assert shorter > members // 2
+PY
 
 note "a job still running: no front yet, the log so far"
 job_from tests/jobs/small-symreg.yaml long.yaml "s/generations: 100/generations: 10000000/" "s/^output: .*/output: long.h5/"

@@ -16,11 +16,23 @@ figcaption { font-size: 85%; max-width: 40em; }
 .note { color: #7a4b00; }
 section { border-top: 2px solid #ddd; margin-top: 2em; }
 .beside { display: flex; flex-wrap: wrap; gap: 0 2em; align-items: flex-start; }
+details { font-size: 85%; color: #555; } summary { cursor: pointer; }
 """
+
+
+class Markup(str):
+    """Markup made here, which table() places as it is (every other cell text is escaped)."""
 
 
 def escape(text):
     return html.escape(str(text), quote=True)
+
+
+def with_exact_text(shown, exact):
+    """`shown` (a readable form), and `exact` one click away when it differs."""
+    if shown == exact:
+        return Markup(escape(shown))
+    return Markup(f"{escape(shown)}<details><summary>exact</summary><code>{escape(exact)}</code></details>")
 
 
 def heading(level, text, anchor=""):
@@ -51,14 +63,14 @@ def image_figure(src, alt, caption):
 
 
 def table(header, rows, numeric_columns=()):
-    """header: texts; rows: lists of texts (escaped here); numeric_columns: indices right-aligned."""
+    """header: texts; rows: lists of texts (escaped here) or Markup; numeric_columns: indices right-aligned."""
     head = "".join(f"<th>{escape(h)}</th>" for h in header)
     body = []
     for row in rows:
         cells = []
         for i, cell in enumerate(row):
             cls = ' class="number"' if i in numeric_columns else ""
-            cells.append(f"<td{cls}>{escape(cell)}</td>")
+            cells.append(f"<td{cls}>{cell if isinstance(cell, Markup) else escape(cell)}</td>")
         body.append("<tr>" + "".join(cells) + "</tr>")
     return f"<table><thead><tr>{head}</tr></thead><tbody>{''.join(body)}</tbody></table>"
 

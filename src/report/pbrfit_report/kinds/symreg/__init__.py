@@ -1,5 +1,6 @@
 # `symreg` results (docs/results-symreg.md): an overview of the outputs' knees, then per output group its
-# front (error vs cost with every member labelled, the knee ringed, the anchors as stars), the front and
+# knee typeset, its front (error vs cost with members labelled, the knee ringed, the anchors as stars;
+# expressions with their constants rounded, readable.py), the front and
 # anchors tables side by side (each anchor beside our best member at equal or lower cost), the knee's
 # residuals over the inputs, the islands' best error over the generations and the archive's first rows;
 # the group `subexpressions` as the table of recurring sub-expressions. Other groups get the generic
@@ -10,10 +11,12 @@ from ... import html_page as page
 from ...generic import Renderer, guarded
 from ...statistics import number
 from .. import register
+from .formula_figure import formula_figure
 from .front_figure import front_figure
 from .front_tables import anchors_markup, front_markup, recurring_markup
 from .log_figure import log_figure
 from .output_tables import is_output_group, read_output, texts
+from .readable import latex, readable_front
 from .residual_figure import residual_figure, residuals
 
 SHOWN_HERE = {"front", "anchors", "log", "knee_prediction"}
@@ -24,25 +27,47 @@ def _figure(report, make, alt, caption):
     return [page.image_figure(name, alt, caption)] if name else []
 
 
-def _knee_text(data):
+def _knee_text(data, shown):
     knee = data.knee()
     if knee is None:
         return "no knee marked"
-    return f"member {knee}: {texts(data.front, 'expression')[knee]}"
+    return f"member {knee}: {shown[knee]}"
 
 
-def _front_parts(report, data):
+def _knee_formula(report, data, shown):
+    """The knee typeset (SymPy's LaTeX of its rounded expression, temporaries substituted), if it can be."""
+    knee = data.knee()
+    if knee is None:
+        return []
+    try:
+        formula = latex(shown[knee], data.inputs)
+    except Exception:  # noqa: BLE001 - a text SymPy cannot take is shown as text only
+        return []
+    if not formula:
+        return []
+    figure = formula_figure(formula)
+    if figure is None:
+        return []
+    return _figure(report, lambda: figure, f"{data.path.rstrip('/')} knee formula",
+                   "the knee typeset (SymPy's form: like terms and constant products combined, those shown to 4 "
+                   "digits)")
+
+
+def _front_parts(report, data, shown):
     path = data.path.rstrip("/")
     parts = [page.heading(3, f"{path}/front and {path}/anchors")]
     if len(data.front) == 0:
         return parts + [page.paragraph("No front yet: the job has not finished its last stage, which measures the "
                                        "front and the anchors.")]
     parts.append(page.paragraph(f"{len(data.front)} members by increasing cost; the knee (the default of "
-                                f"pbrfit export) is {_knee_text(data)}"))
-    parts += _figure(report, lambda: front_figure(data), f"{path}/front",
+                                f"pbrfit export) is {_knee_text(data, shown)}. Constants are rounded to the fewest "
+                                "digits that leave the RMSE's printed digits unchanged; 'exact' shows the text "
+                                "as found."))
+    parts += _knee_formula(report, data, shown)
+    parts += _figure(report, lambda: front_figure(data, shown), f"{path}/front",
                      f"{path}/front (front) and {path}/anchors (anchors): RMSE filled, max abs error hollow, the "
                      "knee ringed, anchors as stars; labels: row and shortened expression")
-    return parts + [page.beside([page.heading(4, "front") + front_markup(data),
+    return parts + [page.beside([page.heading(4, "front") + front_markup(data, shown),
                                  page.heading(4, "anchors") + anchors_markup(data)])]
 
 
@@ -72,14 +97,15 @@ def _overview_row(data):
     if knee is None:
         return [data.path, ", ".join(data.inputs), str(len(data.front)), "–", "–", "–", "–"]
     m = data.front[knee]
-    return [data.path, ", ".join(data.inputs), str(len(data.front)), str(knee), texts(data.front, "expression")[knee],
-            number(m["cost"]), number(m["rmse"])]
+    exact = texts(data.front, "expression")[knee]
+    return [data.path, ", ".join(data.inputs), str(len(data.front)), str(knee),
+            page.with_exact_text(readable_front(data)[knee], exact), number(m["cost"]), number(m["rmse"])]
 
 
 @register("symreg")
 class SymregRenderer(Renderer):
     def kind_sections(self, report):
-        outputs = [read_output(g, ("front",)) for g in report.groups if is_output_group(g)]
+        outputs = [read_output(g, ("front", "knee_prediction")) for g in report.groups if is_output_group(g)]
         rows = [_overview_row(data) for data in outputs]
         header = ["output", "inputs", "front members", "knee", "knee expression", "knee cost", "knee RMSE"]
         return [page.section([page.heading(2, "Symbolic regression", "symreg"),
@@ -87,8 +113,10 @@ class SymregRenderer(Renderer):
 
     def output_section(self, report, group, anchor):
         data = read_output(group)
+        shown = readable_front(data)
         parts = self.group_header(group, anchor)
-        for make in (_front_parts, _residual_parts, _log_parts):
+        parts += guarded(lambda: _front_parts(report, data, shown), group.path)
+        for make in (_residual_parts, _log_parts):
             parts += guarded(lambda: make(report, data), group.path)
         for table in (t for t in group.tables if t.name not in SHOWN_HERE):
             parts += self.rows_section(table)

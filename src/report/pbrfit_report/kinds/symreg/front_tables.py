@@ -1,5 +1,5 @@
-# One output's front and anchors as HTML tables (texts escaped by html_page): every member with its whole
-# expression and metrics, the knee marked; every anchor with its metrics beside the front member of
+# One output's front and anchors as HTML tables (texts escaped by html_page): every member with its
+# expression for people (constants rounded, readable.py; the exact text a click away) and metrics, the knee marked; every anchor with its metrics beside the front member of
 # lowest RMSE among those costing at most the anchor's cost, and how the two RMSEs compare.
 import numpy as np
 
@@ -13,12 +13,13 @@ ANCHOR_HEADER = ["anchor", "expression", "cost", "operations", "RMSE", "max abs 
                  "our best at cost <= anchor's", "its cost", "its RMSE", "its max abs error", "RMSE: ours vs anchor"]
 
 
-def front_markup(data):
+def front_markup(data, shown):
+    """shown: the members' expressions for people (readable.readable_front), the exact texts a click away."""
     front = data.front
     rows = []
     for k, expression in enumerate(texts(front, "expression")):
         m = front[k]
-        rows.append([str(k), expression, number(m["cost"]), str(int(m["operations"])), str(int(m["piecewise"])),
+        rows.append([str(k), page.with_exact_text(shown[k], expression), number(m["cost"]), str(int(m["operations"])), str(int(m["piecewise"])),
                      number(m["rmse"]), number(m["max_abs_error"]), number(m["test_rmse"]), str(int(m["generation"])),
                      "knee" if m["knee"] == 1 else ""])
     return page.table(FRONT_HEADER, rows, (0, 2, 3, 4, 5, 6, 7, 8))
