@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # `pbrfit report` of a lut result: a finished small DFG table (2 ranks) gives RESULT.report/index.html
-# whose every image is a valid PNG and which names every table; a report of a job still running works
+# whose every image is a valid PNG and which names every table, with scale and bias as curves beside the
+# convention's published fit and that fit's differences from the table (checked here on the file's own axes); a report of a job still running works
 # too and shows the cells not yet computed; with --watch it is remade while the job runs (the page
 # reloading itself) and a last time, without reloading, once the job has stopped.
 source "$(dirname "$0")/lib/common.bash"
@@ -15,6 +16,28 @@ grep -q "small-dfg" result.report/index.html || fail "the page does not name the
   result.report/index.html || fail "the job text is not on the page, whole, in a <pre>"
 grep -q "visibility" result.report/index.html || fail "the group's attributes are not on the page"
 note "$IMAGES images for $TABLES tables"
+
+note "scale and bias beside the convention's published fit (UE4's: Karis 2014), over every cell"
+grep -q 'id="dfg-curves"' result.report/index.html || fail "no 'Scale and bias' section"
+grep -q 'alt="dfg scale and bias curves"' result.report/index.html || fail "no curves of scale and bias"
+PYTHONPATH=$(dirname "$PBRFIT")/share/pbrfit/report "$H5PY_PYTHON" - result.h5 result.report/index.html <<'PY' ||
+import re, sys, h5py, numpy as np
+from pbrfit_report.kinds.lut import karis_2014
+page = open(sys.argv[2]).read()
+assert "Beside Karis 2014 (UE4 mobile)" in page
+with h5py.File(sys.argv[1], "r") as f:
+    scale = f["dfg/scale"]
+    outer, inner = (scale.dims[d][0] for d in (0, 1))  # the table's own axes, read from its dimension scales
+    assert (outer.name.split("/")[-1], inner.name.split("/")[-1]) == ("roughness", "n_dot_v")
+    r, v = np.meshgrid(outer[()], inner[()], indexing="ij")
+    fitted = karis_2014(v, r)
+    for name, k in (("scale", 0), ("bias", 1)):
+        rms = float(np.sqrt(np.mean((f["dfg/" + name][()] - fitted[k]) ** 2)))
+        shown = re.search(rf"<td>{name}</td><td class=\"number\">([^<]*)</td>", page).group(1)
+        assert f"{rms:.4g}" == shown, (name, rms, shown)
+        print(f"{name}: RMS difference from Karis 2014 {shown}")
+PY
+  fail "the published fit's differences on the page are not the table's"
 
 note "again into an existing directory: the same page, no figure left over from before"
 touch result.report/fig-9999.png
