@@ -1,7 +1,8 @@
 # `sweep` results (docs/results-sweep.md): first what a reader asks of a fitted table, per model at the
 # requested grid (the last level): how large its errors are over the cells (median, 95th percentile,
 # worst; relative errors say so in their descriptions), how it compares with a published model cell by
-# cell (the ratio map), and, for GGX LTC tables, the fitted lobe beside its target at a few cells. The
+# cell (the ratio map), for GGX LTC tables the fitted lobe beside its target at a few cells, and for other
+# sweeps the fitted parameters as curves over the axes. The
 # generic sections follow for every level; vector outputs (a matrix or texture per cell, for engines:
 # `pbrfit export`) are listed there but not drawn as slices.
 import numpy as np
@@ -13,13 +14,16 @@ from ...generic import Renderer, guarded
 from ...statistics import number
 from .. import register
 from .lobe_figure import GGX_MODELS, lobe_figure
+from .parameter_curves import drawable, parameter_curves_figure
 from .ratio_figure import error_ratio, ratio_figure
 
 ERROR_ROLES = ("error",)
 
 
 def _final_groups(report):
-    return [g for g in report.groups if string_attribute(g.node, "final_level") == "true"]
+    """The requested grid's groups, and its projections (averages over an axis, attribute projected_over)."""
+    return [g for g in report.groups
+            if string_attribute(g.node, "final_level") == "true" or string_attribute(g.node, "projected_over")]
 
 
 def _percentile(values, q):
@@ -76,6 +80,17 @@ def _lobe_parts(report, group):
                    "incidence, each panel scaled to the target's peak")
 
 
+def _parameter_parts(report, group):
+    """The fitted parameters as curves, for sweeps other than LTC tables (whose matrices the lobes show)."""
+    if any(t.name == "matrix" for t in group.tables):
+        return []
+    tables = drawable(group.tables)
+    if not tables:
+        return []
+    return _figure(report, lambda: parameter_curves_figure(tables), f"{group.path} parameters",
+                   f"{group.path}: the fitted parameters over the innermost axis, a curve per value of the outer one")
+
+
 def _group_quality(report, group):
     parts = [page.heading(3, group.path)]
     errors = _error_rows(group)
@@ -97,6 +112,7 @@ def _group_quality(report, group):
                     f"{group.path}: {c.ours_table} over {c.anchor_table} per cell (log scale; blue: ours smaller)"),
                     group.path)
     parts += guarded(lambda: _lobe_parts(report, group), group.path)
+    parts += guarded(lambda: _parameter_parts(report, group), group.path)
     for table in group.tables:
         table.forget_values()
     return parts
@@ -109,9 +125,11 @@ class SweepRenderer(Renderer):
         if not groups:
             return []
         parts = [page.heading(2, "How good the fit is", "quality"),
-                 page.paragraph("Per model at the requested grid: the errors over its cells, the comparison with "
-                                "a published model where the result has one, and for GGX tables the fitted "
-                                "lobes. Every level's tables follow below.")]
+                 page.paragraph("Per model at the requested grid (and its averages over an axis, where the job "
+                                "asks for them): the errors over its cells, the comparison with "
+                                "a published model where the result has one, for GGX tables the fitted lobes, "
+                                "for other sweeps the fitted parameters as curves. Every level's tables follow "
+                                "below.")]
         for group in groups:
             parts += _group_quality(report, group)
         return [page.section(parts)]
