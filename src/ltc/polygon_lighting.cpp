@@ -139,7 +139,16 @@ QuadIntegral lobe_quad_integral(const brdf::Lobe& lobe, const Quad& quad, const 
     return {lobe.value(point / length) * solid_angle * jacobian};
   };
   std::vector<integrate::Box<2>> tiles;
-  for (std::size_t k = 0; k < triangles.size(); ++k) tiles.push_back({{double(k), 0.0}, {double(k + 1), 1.0}});
+  const std::size_t split = std::max<std::size_t>(1, options.initial_tiles_per_side);
+  const double step = 1.0 / double(split);
+  for (std::size_t k = 0; k < triangles.size(); ++k)
+    for (std::size_t i = 0; i < split; ++i)
+      for (std::size_t j = 0; j < split; ++j) {
+        // The last tile ends exactly on the triangle's edge, so no tile straddles two triangles.
+        const double s1 = i + 1 == split ? double(k + 1) : double(k) + double(i + 1) * step;
+        const double t1 = j + 1 == split ? 1.0 : double(j + 1) * step;
+        tiles.push_back({{double(k) + double(i) * step, double(j) * step}, {s1, t1}});
+      }
   integrate::AdaptiveOptions adaptive;
   adaptive.abs_tolerance = options.absolute_tolerance;
   adaptive.rel_tolerance = options.relative_tolerance;

@@ -4,7 +4,8 @@
 # table (share of cells where ours is at most theirs, ratio maps) and the fitted lobes beside GGX, whose
 # formulas must agree with the fitter (the LTC of a cell close to its GGX lobe, the transposed matrix far
 # from it). Vector outputs (matrices, textures) are listed but not drawn; a table whose cells all hold one
-# value gets a line instead of a map.
+# value gets a line instead of a map. The check render is drawn once, in its own section, with the mean
+# errors of the file's images on the page.
 source "$(dirname "$0")/lib/common.bash"
 source "$PBRFIT_SOURCE_DIR/tests/mpi/lib/report_checks.bash"
 
@@ -59,5 +60,25 @@ for vi, ri in ((2, 4), (4, 6), (6, 3)):
     print(f"cell ({vi}, {ri}): relative L1 {ours:.3f}, transposed {transposed:.3f}")
     if not (ours < 0.15 and transposed > 2 * ours):
         sys.exit(1)
+PY
+note "the check render: its own section with the file's errors; not drawn again as slices"
+grep -q 'id="check-render"' "$page" || fail "no 'How the table lights a plane' section"
+grep -qF 'alt="/ltc/render images"' "$page" || fail "the check render's images are missing"
+if grep -qF 'alt="/ltc/render/ltc"' "$page"; then fail "the render is drawn as slices"; fi
+"$H5PY_PYTHON" - result.h5 "$page" <<'PY' || fail "the check render's errors on the page disagree with the file"
+import sys, h5py, numpy as np
+page = open(sys.argv[2]).read()
+section = page[page.index('id="check-render"'):]
+with h5py.File(sys.argv[1], "r") as f:
+    g = f["ltc/render"]
+    ours, truth, theirs, r = g["ltc"][()], g["reference"][()], g["published"][()], g["roughness"][()]
+for i in range(len(r)):
+    both = np.isfinite(ours[i]) & np.isfinite(truth[i])
+    assert both.sum() > 0.9 * both.size, "most pixels are lit"
+    mean = np.abs(ours[i] - truth[i])[both].mean() / truth[i][both].mean()
+    row = f"<td>{r[i]:.3g}</td><td class=\"number\">{100 * mean:.2f} %</td>"
+    print(row)
+    if row not in section or not (0.0 < mean < 0.2):
+        sys.exit(f"image {i}: {row} not on the page, or an implausible error")
 PY
 echo "PASS"

@@ -8,9 +8,10 @@ source "$(dirname "$0")/lib/report_checks.bash"
 MPI_FLAGS+=(--bind-to none)  # 1 rank x 2 threads needs both cores
 
 cp "$PBRFIT_SOURCE_DIR/tests/jobs/small-sweep.yaml" ltc.yaml
-GROUPS_TO_COMPARE=(/ltc/level0 /ltc/level1)
+GROUPS_TO_COMPARE=(/ltc/level0 /ltc/level1 /ltc/render)
 compare_layouts ltc.yaml
-"$PBRFIT" status ltc-ref.h5 | grep -q "^progress: *106 of 106 work items" || fail "the sweep did not fit 25 + 81 cells"
+"$PBRFIT" status ltc-ref.h5 | grep -q "^progress: *130 of 130 work items" ||
+  fail "the sweep did not fit 25 + 81 cells and render 3 images of 8 bands"
 /usr/bin/python3 - <<'PY' || fail "the LTC sweep's fits or warm starts are wrong"
 import h5py, numpy as np
 f = h5py.File("ltc-ref.h5", "r")

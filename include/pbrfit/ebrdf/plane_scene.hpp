@@ -8,30 +8,16 @@
 //    plane); the light, a vertical rectangle facing the camera, 0.3 h by 0.1 h, stands 0.8 h beyond.
 // The light is not drawn and casts no shadow; it shines on both sides.
 //
-// Invariants: ray(column, row) is the unit direction through the pixel position (column, row) (pixel
-// centres at + 0.5, row 0 at the top); plane_hit is nullopt for rays that miss the plane.
-#include <array>
+// The geometry (camera, rays, the plane) is ltc/plane_scene.hpp.
 #include <cstddef>
-#include <optional>
-#include <string>
 
-#include "pbrfit/geometry/vector.hpp"
+#include "pbrfit/ltc/plane_scene.hpp"
 
 namespace pbrfit::ebrdf {
 
 enum class SceneView { top, grazing };
 
-struct PlaneScene {
-  Vector3 camera;
-  Vector3 forward, right, up;  // orthonormal camera frame
-  double tan_half_fov = 0.2679;      // 30 degrees vertical
-  std::size_t resolution = 128;
-  std::array<Vector3, 4> light;  // vertices in order around the rectangle
-
-  Vector3 ray(double column, double row) const;
-  // The point where the ray through (column, row) meets the plane.
-  std::optional<Vector3> plane_hit(double column, double row) const;
-};
+using ltc::PlaneScene;
 
 PlaneScene make_plane_scene(SceneView view, double distance, std::size_t resolution);
 const char* scene_view_name(SceneView view);

@@ -47,6 +47,9 @@ struct QuadIntegralOptions {
   double relative_tolerance = 1e-3;
   double absolute_tolerance = 1e-9;
   std::size_t max_evaluations = 400'000;  // per quad
+  // The cubature starts from this many tiles a side per fan triangle: more find narrow features (a sharp
+  // peak near an edge) that a single tile's error estimate can miss.
+  std::size_t initial_tiles_per_side = 1;
 };
 
 struct QuadIntegral {

@@ -50,6 +50,7 @@ LtcProblemSettings objective_settings(const ObjectiveKeys& objective) {
   s.metric_points = objective.judge_samples.value_or(s.metric_points);
   s.polygon_quads = objective.polygon_quads.value_or(s.polygon_quads);
   s.polygon.relative_tolerance = objective.polygon_tolerance.value_or(s.polygon.relative_tolerance);
+  s.render_size = objective.render_size.value_or(s.render_size);
   if (objective.fit_to_lights.value) {
     if (s.polygon_quads == 0) objective.fit_to_lights.reject("is 'lights', which needs 'polygon_quads' > 0 to judge the fit");
     s.fit_to = LtcProblemSettings::FitTo::lights;

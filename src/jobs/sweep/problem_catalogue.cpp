@@ -43,9 +43,9 @@ std::unique_ptr<SweepProblem> make_parallax(const SweepKeys& sweep, ParallaxStud
 const std::vector<ProblemEntry>& problem_catalogue() {
   static const std::vector<ProblemEntry> entries = {
       {"ltc_ggx", "isotropic LTC table of GGX (Heitz et al. 2016) on the published grid, beside the published table",
-       {"samples", "judge_samples", "polygon_quads", "polygon_tolerance", "fit_to"}, make_ltc_ggx},
+       {"samples", "judge_samples", "polygon_quads", "polygon_tolerance", "fit_to", "render_size"}, make_ltc_ggx},
       {"ltc", "isotropic LTC tables of the built-in BRDF families, a BRDF expression or a measured material",
-       {"samples", "judge_samples", "polygon_quads", "polygon_tolerance", "fit_to"}, make_ltc},
+       {"samples", "judge_samples", "polygon_quads", "polygon_tolerance", "fit_to", "render_size"}, make_ltc},
       {"sphere_light", "GGX lit by a spherical light: roughness modification, capped, representative point models",
        {"norm", "tolerance", "max_evaluations", "views"}, make_sphere_light},
       {"multi_lobe_sg", "multi-lobe spherical Gaussian kernel for GGX environment lighting", {"samples", "lobes"},
@@ -83,6 +83,8 @@ spec::Keys<ObjectiveKeys> objective_keys() {
       .range(16, 1 << 22);
   k.integer("polygon_quads", "quad lights the polygon-lighting errors are measured with (0: none)", &O::polygon_quads)
       .range(0, 4096);
+  k.integer("render_size", "pixels a side of the check render of the finished table (0: none)", &O::render_size)
+      .range(0, 1024);
   k.number("polygon_tolerance", "relative tolerance of the lobe's integral over each quad light", &O::polygon_tolerance)
       .range(1e-8, 0.1);
   k.choice<bool>("fit_to", {{"lobe", false}, {"lights", true}},

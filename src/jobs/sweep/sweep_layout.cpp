@@ -94,6 +94,7 @@ store::ResultLayout SweepWorkload::layout() const {
     for (std::uint32_t level = 0; level < schedule_.levels().size(); ++level)
       layout.groups.push_back(level_group(m, level));
     for (std::size_t p = 0; p < settings_.projections.size(); ++p) layout.groups.push_back(projection_group(m, p));
+    if (render_plan_) layout.groups.push_back(render_group(m));
   }
   return layout;
 }

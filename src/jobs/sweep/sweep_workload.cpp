@@ -54,6 +54,13 @@ SweepWorkload::SweepWorkload(SweepSettings settings)
                 .compute(&SweepWorkload::project)
                 .check(&SweepWorkload::check_projection)
                 .blocks(&SweepWorkload::projection_blocks));
+  render_plan_ = settings_.problem->render_plan(schedule_.levels().back());
+  add_stage(runtime::stage<Nothing, RenderCells, RenderImage>("render", render_plan_ ? 1 : 0, this)
+                .items(&SweepWorkload::render_count)
+                .input(&SweepWorkload::render_cells)
+                .compute(&SweepWorkload::render)
+                .check(&SweepWorkload::check_render)
+                .blocks(&SweepWorkload::render_blocks));
 }
 
 std::string SweepWorkload::group_name(std::size_t model, std::uint32_t level) const {
@@ -129,7 +136,10 @@ std::vector<store::Block> SweepWorkload::cell_blocks(const StageItem& item, cons
 
 std::uint32_t SweepWorkload::cell_kept_through(const StageItem& item) const {
   const CellRef cell = schedule_.cell_of(item.step, item.item());
-  if (!settings_.projections.empty() && cell.level == final_level()) return first_stage("projections");
+  if (cell.level == final_level()) {
+    if (render_plan_) return first_stage("render");
+    if (!settings_.projections.empty()) return first_stage("projections");
+  }
   return schedule_.last_reader(cell);
 }
 

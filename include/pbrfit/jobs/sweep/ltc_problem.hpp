@@ -21,6 +21,12 @@
 // published texel's; then the lobe's own extra outputs (a measured material's RGB albedo); last, for a lobe
 // with a published table, the published texel's own ltc_1 and ltc_2.
 //
+// Check render (ltc/table_render.hpp), with render_size > 0: each model's last-level table shades the plane
+// under a rectangle light as a shader reads it (`ltc`), beside the lobe's own integral over the light
+// (`reference`) and, for a lobe with a published table, that table read the same way (`published`); an
+// image per roughness nearest 0.25, 0.5 and 0.75 (one image without a roughness axis), further axes at their
+// middle value.
+//
 // Contract: as SweepProblem. A cell target builds each model's lobe, moments and estimators on first use, and
 // is used by one thread.
 #include <cstddef>
@@ -65,6 +71,7 @@ struct LtcProblemSettings {
   enum class FitTo { lobe, lights } fit_to = FitTo::lobe;
   std::size_t training_quads = 64;           // lights a fit_to = lights table is refined on
   std::size_t refinement_evaluations = 150;  // ... and the objective evaluations it may spend
+  std::size_t render_size = 64;              // pixels a side of the check render; 0: none
   std::map<std::string, std::string> attributes;  // further group attributes
 };
 

@@ -56,7 +56,7 @@ struct FitKeys {
 
 // `objective`: every key any problem reads; none has a default, each problem chooses its own.
 struct ObjectiveKeys {
-  std::optional<std::size_t> samples, judge_samples, polygon_quads;
+  std::optional<std::size_t> samples, judge_samples, polygon_quads, render_size;
   std::optional<double> polygon_tolerance;
   spec::Located<bool> fit_to_lights;  // fit_to: lights
   spec::Located<double> norm{2.0};    // the p of the L^p norm: 1, 2, 3 or +inf

@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <map>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -18,6 +19,7 @@
 #include "pbrfit/store/result_layout.hpp"
 #include "pbrfit/sweep/cell_fit.hpp"
 #include "pbrfit/sweep/grid_axis.hpp"
+#include "pbrfit/sweep/level_grid.hpp"
 
 namespace pbrfit::jobs::sweep {
 
@@ -57,6 +59,24 @@ class CellTarget {
   virtual std::vector<double> outputs(std::size_t model, std::span<const double> parameters) const = 0;
 };
 
+// A check render of the finished table (optional): images of a scene shaded by the last level's fits (as an
+// engine would use them) and by ground truth, one image per value of `image_axis`, each reading the last
+// level's cells `cells[image]` (flat indices, in the order render() receives their outputs).
+struct RenderPlan {
+  std::string description;  // the scene, for the result group
+  std::size_t resolution = 0;  // pixels a side
+  std::size_t band_rows = 8;   // rows per work item
+  std::string image_axis;
+  std::string image_axis_description;
+  std::vector<double> image_values;
+  std::vector<std::vector<std::size_t>> cells;
+  std::vector<std::vector<std::vector<double>>> coordinates;  // of those cells, per image
+  struct Layer {
+    std::string name, description;
+  };
+  std::vector<Layer> layers;  // per model
+};
+
 class SweepProblem {
  public:
   virtual ~SweepProblem() = default;
@@ -70,6 +90,14 @@ class SweepProblem {
   virtual optimize::ToleranceSchedule tolerance_schedule() const { return optimize::ToleranceSchedule::constant(0.0); }
   // Throws RunError when the cell's target cannot be computed (e.g. an integral misses its tolerance).
   virtual std::unique_ptr<CellTarget> target(std::span<const double> coordinates) const = 0;
+  // The check render of a finished table over the last level's grid, if the problem has one.
+  virtual std::optional<RenderPlan> render_plan(const pbrfit::sweep::LevelGrid&) const { return std::nullopt; }
+  // Rows [first_row, first_row + rows) of image `image` of model `model` (an index into models()): layers x
+  // rows x resolution values, layer-major, each layer row-major from its top row; `outputs` are the model's
+  // outputs at plan.cells[image], in order. Pure; throws RunError where a pixel cannot be computed.
+  virtual std::vector<double> render(std::size_t model, const RenderPlan& plan, std::size_t image,
+                                     std::size_t first_row, std::size_t rows,
+                                     std::span<const std::vector<double>> outputs) const;
 };
 
 }  // namespace pbrfit::jobs::sweep

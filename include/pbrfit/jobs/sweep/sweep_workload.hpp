@@ -13,7 +13,12 @@
 // `projections`, a last stage has one item per projected axis, whose input is every fit of the last level;
 // it writes `<model>/level<L>_mean_over_<axis>` over the other axes, with each parameter's and the error's
 // mean and standard deviation over the projected axis.
+//
+// Check render (problems with a RenderPlan, e.g. LTC tables): a last stage has one item per model, image and
+// band of rows, whose input is the last level's fits of the cells the image reads; it writes `<model>/render` over
+// (image axis, row, column) with a table per layer of the plan (docs/results-sweep.md).
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -95,10 +100,21 @@ class SweepWorkload final : public runtime::StagedWorkload<SweepSummary> {
   pbrfit::sweep::LevelGrid projected_grid(std::size_t projection) const;
   store::Group projection_group(std::size_t model, std::size_t projection) const;
 
+  // The check render (sweep_render.cpp): items run over bands, then images, then models.
+  using RenderCells = std::vector<CellFits>;
+  using RenderImage = std::vector<double>;
+  std::uint64_t render_count(std::uint32_t) const;
+  RenderCells render_cells(std::uint32_t step, std::uint64_t item, const runtime::KeptResults& kept) const;
+  RenderImage render(const runtime::StageTask<Nothing, RenderCells>& task) const;
+  void check_render(const StageItem& at, const RenderImage& image) const;
+  std::vector<store::Block> render_blocks(const StageItem& at, const RenderImage& image) const;
+  store::Group render_group(std::size_t model) const;
+
   SweepSettings settings_;
   std::vector<ModelInfo> models_;  // the job's models, in job order
   std::vector<FitShape> shapes_;
   pbrfit::sweep::SweepSchedule schedule_;
+  std::optional<RenderPlan> render_plan_;
 };
 
 }  // namespace pbrfit::jobs::sweep

@@ -8,6 +8,8 @@
 #include "pbrfit/ltc/shader_form.hpp"
 #include "pbrfit/ltc/sphere_form_factor.hpp"
 
+#include "ltc_render.hpp"
+
 namespace pbrfit::jobs::sweep {
 namespace {
 
@@ -266,8 +268,12 @@ class LtcProblem final : public SweepProblem {
                          ? "the lights objective: rms relative error over the training lights inside the lobe + "
                            "their weighted error + 0.01 x the cubed error over the lobe fit's"
                          : "the fitting objective: integral of |D - rho|^3 over the sphere (MIS, objective lattice)",
-                     standard_outputs(spec, settings_.polygon_quads > 0)});
+                     standard_outputs_of(spec)});
     return out;
+  }
+
+  std::vector<ModelOutput> standard_outputs_of(const LtcModelSpec& spec) const {
+    return standard_outputs(spec, settings_.polygon_quads > 0);
   }
 
   std::map<std::string, std::string> attributes() const override {
@@ -294,6 +300,16 @@ class LtcProblem final : public SweepProblem {
 
   std::unique_ptr<CellTarget> target(std::span<const double> c) const override {
     return std::make_unique<LtcCell>(settings_, quads_, training_, c, layout_);
+  }
+
+  std::optional<RenderPlan> render_plan(const pbrfit::sweep::LevelGrid& grid) const override {
+    return ltc_render_plan(settings_, grid, layout_.view, layout_.roughness);
+  }
+
+  std::vector<double> render(std::size_t model, const RenderPlan& plan, std::size_t image, std::size_t first_row,
+                             std::size_t rows, std::span<const std::vector<double>> outputs) const override {
+    const auto& spec = settings_.models.at(model);
+    return ltc_render(spec, standard_outputs_of(spec), plan, image, first_row, rows, layout_.view, outputs);
   }
 
  private:

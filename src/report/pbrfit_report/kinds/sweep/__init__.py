@@ -2,9 +2,12 @@
 # requested grid (the last level): how large its errors are over the cells (median, 95th percentile,
 # worst; relative errors say so in their descriptions), how it compares with a published model cell by
 # cell (the ratio map), for GGX LTC tables the fitted lobe beside its target at a few cells, and for other
-# sweeps the fitted parameters as curves over the axes. The
-# generic sections follow for every level; vector outputs (a matrix or texture per cell, for engines:
-# `pbrfit export`) are listed there but not drawn as slices.
+# sweeps the fitted parameters as curves over the axes; for LTC tables, the check render: a plane under a
+# rectangle light lit by the table, by ground truth and by the published table. The generic sections follow
+# for every level; vector outputs (a matrix or texture per cell, for engines: `pbrfit export`) are listed
+# there but not drawn as slices, and the render's images are only drawn in their own section.
+from html import escape
+
 import numpy as np
 
 from ... import html_page as page
@@ -13,6 +16,7 @@ from ...attributes import string_attribute
 from ...generic import Renderer, guarded
 from ...statistics import number
 from .. import register
+from .check_render import check_render_figure, image_errors, is_render_group, render_images
 from .lobe_figure import GGX_MODELS, lobe_figure
 from .parameter_curves import drawable, parameter_curves_figure
 from .ratio_figure import error_ratio, ratio_figure
@@ -118,6 +122,35 @@ def _group_quality(report, group):
     return parts
 
 
+def _render_section(report, group):
+    layers, axis = render_images(group)
+    if "ltc" not in layers or "reference" not in layers:
+        return []
+    values = axis.values
+    truth = layers["reference"]
+    rows = []
+    for i, value in enumerate(values):
+        ours_mean, ours_p95 = image_errors(layers["ltc"][i], truth[i])
+        row = [f"{value:.3g}", f"{100 * ours_mean:.2f} %", f"{100 * ours_p95:.2f} %"]
+        if "published" in layers:
+            theirs_mean, theirs_p95 = image_errors(layers["published"][i], truth[i])
+            row += [f"{100 * theirs_mean:.2f} %", f"{100 * theirs_p95:.2f} %"]
+        rows.append(row)
+    headers = [axis.name, "this table: mean error", "95th percentile"]
+    if "published" in layers:
+        headers += ["published: mean error", "95th percentile"]
+    model = string_attribute(group.node, "model") or group.path
+    parts = [page.heading(3, f"{model}: a plane under a rectangle light"),
+             page.paragraph(f"{group.description}. Mean error: the mean of |image - truth| over the mean of the "
+                            "truth; 95th percentile: of |image - truth| over the image's brightest truth."),
+             page.table(headers, rows, tuple(range(1, len(headers))))]
+    parts += _figure(report, lambda: check_render_figure(layers, axis.name, values), f"{group.path} images",
+                     f"{group.path}: a row per {axis.name}; the table as a shader reads it, ground truth"
+                     + (", the published table" if "published" in layers else "") +
+                     ", and the differences from the truth (red: too bright, blue: too dark)")
+    return parts
+
+
 @register("sweep")
 class SweepRenderer(Renderer):
     def kind_sections(self, report):
@@ -132,7 +165,19 @@ class SweepRenderer(Renderer):
                                 "below.")]
         for group in groups:
             parts += _group_quality(report, group)
+        renders = [g for g in report.groups if is_render_group(g)]
+        if renders:
+            parts.append(page.heading(2, "How the table lights a plane", "check-render"))
+            for group in renders:
+                parts += guarded(lambda group=group: _render_section(report, group), group.path)
         return [page.section(parts)]
+
+    def group_section(self, report, group, anchor):
+        if is_render_group(group):
+            layers = page.bullet_list([escape(f"{t.path}: {t.description}") for t in group.tables])
+            return page.section(self.group_header(group, anchor) + [layers, page.paragraph(
+                "Its images are drawn above, under \"How the table lights a plane\".", "note")])
+        return super().group_section(report, group, anchor)
 
     def table_figures(self, report, group, table, scale_groups):
         names = [a.name if a is not None else "" for a in table.axes]
