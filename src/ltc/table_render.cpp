@@ -68,14 +68,33 @@ TableTexel interpolated_texel(std::span<const double> positions, std::span<const
   return out;
 }
 
-double table_shading(const TableTexel& texel, const Quad& light) {
+namespace {
+
+// The texel's LTC, or nullopt with `value` set to what a shader would get without one (NaN or 0).
+std::optional<LtcDistribution> texel_ltc(const TableTexel& texel, double& value) {
+  value = std::numeric_limits<double>::quiet_NaN();
   for (double v : texel.ltc_1)
-    if (!std::isfinite(v)) return std::numeric_limits<double>::quiet_NaN();
-  if (!std::isfinite(texel.norm)) return std::numeric_limits<double>::quiet_NaN();
-  if (!(texel.norm > 0.0)) return 0.0;
+    if (!std::isfinite(v)) return std::nullopt;
+  if (!std::isfinite(texel.norm)) return std::nullopt;
+  value = 0.0;
+  if (!(texel.norm > 0.0)) return std::nullopt;
   const Matrix3 inverse = inverse_from_shader_form(texel.ltc_1);
-  if (!(std::abs(inverse.determinant()) > 1e-300)) return 0.0;
-  return LtcDistribution(matrix_from_shader_form(texel.ltc_1), texel.norm).integrate_polygon(light.vertices);
+  if (!(std::abs(inverse.determinant()) > 1e-300)) return std::nullopt;
+  return LtcDistribution(matrix_from_shader_form(texel.ltc_1), texel.norm);
+}
+
+}  // namespace
+
+double table_shading(const TableTexel& texel, const Quad& light) {
+  double value = 0.0;
+  const auto ltc = texel_ltc(texel, value);
+  return ltc ? ltc->integrate_polygon(light.vertices) : value;
+}
+
+double table_value(const TableTexel& texel, const Vector3& l) {
+  double value = 0.0;
+  const auto ltc = texel_ltc(texel, value);
+  return ltc ? ltc->evaluate(l) : value;
 }
 
 double lobe_shading(const brdf::Lobe& lobe, const Quad& light) {

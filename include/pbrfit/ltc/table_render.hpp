@@ -57,6 +57,9 @@ TableTexel interpolated_texel(std::span<const double> positions, std::span<const
 // one with a NaN, as the published table has off its grid).
 double table_shading(const TableTexel& texel, const Quad& light);
 
+// The texel's LTC at a direction: norm x D(l) (0 for a texel with no LTC, NaN for one with a NaN).
+double table_value(const TableTexel& texel, const Vector3& l);
+
 // The ground truth's: the lobe's integral over the light (lobe_quad_integral about the lobe's peak, or the
 // mirror direction), NaN where the cubature does not converge. Started from one tile per fan triangle, the
 // cubature now and then settles on a value 10 % low in a pixel whose light holds a sharp peak near an edge;

@@ -95,6 +95,7 @@ store::ResultLayout SweepWorkload::layout() const {
       layout.groups.push_back(level_group(m, level));
     for (std::size_t p = 0; p < settings_.projections.size(); ++p) layout.groups.push_back(projection_group(m, p));
     if (render_plan_) layout.groups.push_back(render_group(m));
+    if (render_plan_ && render_plan_->curves) layout.groups.push_back(curves_group(m));
   }
   return layout;
 }

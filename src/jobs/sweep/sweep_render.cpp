@@ -57,7 +57,8 @@ SweepWorkload::RenderImage SweepWorkload::render(const runtime::StageTask<Nothin
 
 void SweepWorkload::check_render(const StageItem& item, const RenderImage& image) const {
   const RenderItem at = render_item(*render_plan_, item.item());
-  if (image.size() != render_plan_->layers.size() * at.rows * render_plan_->resolution)
+  const std::size_t curves = at.first_row == 0 && render_plan_->curves ? render_plan_->curves->size() : 0;
+  if (image.size() != render_plan_->layers.size() * at.rows * render_plan_->resolution + curves)
     throw RunError("a sweep's render has the wrong size");
 }
 
@@ -69,7 +70,34 @@ std::vector<store::Block> SweepWorkload::render_blocks(const StageItem& at, cons
     out.push_back({models_[item.model].name + "/render", render_plan_->layers[layer].name,
                    {item.image, item.first_row, 0}, {1, item.rows, n},
                    store::reals(std::span<const double>(image).subspan(layer * size, size))});
+  if (item.first_row == 0 && render_plan_->curves) {
+    const RenderCurves& curves = *render_plan_->curves;
+    const std::size_t sets = curves.sets.size(), positions = curves.positions.size(), curve = sets * positions;
+    const std::size_t first = render_plan_->layers.size() * size;
+    for (std::size_t layer = 0; layer < curves.layers.size(); ++layer)
+      out.push_back({models_[item.model].name + "/" + curves.group, curves.layers[layer].name,
+                     {item.image, 0, 0}, {1, sets, positions},
+                     store::reals(std::span<const double>(image).subspan(first + layer * curve, curve))});
+  }
   return out;
+}
+
+store::Group SweepWorkload::curves_group(std::size_t m) const {
+  const RenderPlan& plan = *render_plan_;
+  const RenderCurves& curves = *plan.curves;
+  store::Group g;
+  g.name = models_[m].name + "/" + curves.group;
+  g.description = curves.description;
+  g.attributes = {{"model", models_[m].name}};
+  g.axes.push_back({plan.image_axis, plan.image_values, plan.image_axis_description});
+  g.axes.push_back({curves.set_axis, curves.sets, curves.set_description});
+  g.axes.push_back({curves.position_axis, curves.positions, curves.position_description});
+  for (const auto& layer : curves.layers) {
+    store::Table t{layer.name, {plan.image_axis, curves.set_axis, curves.position_axis}, layer.description};
+    t.attributes = {{"role", "output"}};
+    g.tables.push_back(t);
+  }
+  return g;
 }
 
 store::Group SweepWorkload::render_group(std::size_t m) const {

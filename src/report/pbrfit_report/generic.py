@@ -150,8 +150,9 @@ class Renderer:
 
     def render(self, report):
         groups = [(g, f"group-{i + 1}") for i, g in enumerate(report.groups)]
-        sections = [self.group_section(report, g, anchor) for g, anchor in groups]
-        sections = self.kind_sections(report) + sections
+        # The kind's sections first: they answer the questions, so they keep their figures under the cap.
+        first = self.kind_sections(report)
+        sections = first + [self.group_section(report, g, anchor) for g, anchor in groups]
         if report.figures.left_out:
             report.notes.append(f"{report.figures.left_out} figures were left out: a report draws at most "
                                 f"{report.figures.limit}.")

@@ -137,7 +137,7 @@ TEST_CASE("a sweep's headline bounds the errors of half and 95 % of the cells") 
 TEST_CASE("an LTC sweep renders its finished table beside ground truth and the published table") {
   const auto w = workload(rendering_job);
   const auto layout = w.layout();
-  REQUIRE(layout.groups.size() == 2);
+  REQUIRE(layout.groups.size() == 3);
   const auto& group = layout.groups[1];
   CHECK(group.name == "ltc/render");
   CHECK(group.axis("roughness").values == std::vector<double>{1.0 / 3.0, 2.0 / 3.0});
@@ -153,9 +153,20 @@ TEST_CASE("an LTC sweep renders its finished table beside ground truth and the p
   const auto all = run_all(w);  // the last level is kept until the render has read it
   const auto again = run_all(workload(rendering_job));
   CHECK(all == again);
-  std::map<std::string, std::vector<double>> image;  // the first image, 1/3, row-major
+  const auto& lobes = layout.groups[2];
+  CHECK(lobes.name == "ltc/lobes");
+  CHECK(lobes.axis("view_degrees").values.size() == 2);  // the grid's views nearest 30 and 70 degrees
+  CHECK(lobes.axis("light_degrees").values.size() == 181);
+  std::map<std::string, std::vector<double>> image, lobe;  // the first image, 1/3, row-major
   for (std::uint64_t item = 0; item < 2; ++item) {
     for (const auto& block : w.blocks({render, item}, all.at({render, item}))) {
+      if (block.group == "ltc/lobes") {
+        CHECK(item == 0);  // written with the first band
+        CHECK(block.offset == std::vector<std::uint64_t>{0, 0, 0});
+        CHECK(block.count == std::vector<std::uint64_t>{1, 2, 181});
+        for (const auto& v : block.values) lobe[block.table].push_back(v.real());
+        continue;
+      }
       CHECK(block.group == "ltc/render");
       CHECK(block.offset == std::vector<std::uint64_t>{0, 8 * item, 0});
       CHECK(block.count == std::vector<std::uint64_t>{1, 8, 16});
@@ -178,6 +189,21 @@ TEST_CASE("an LTC sweep renders its finished table beside ground truth and the p
   CHECK(std::abs(ours - lit) < 0.04 * lit);
   CHECK(difference < 0.15 * lit);
   CHECK(published < 0.15 * lit);
+
+  // The lobes: the fitted LTC close to its GGX target in the plane of incidence, as the published texel is.
+  REQUIRE(lobe["target"].size() == 2 * 181);
+  for (std::size_t view = 0; view < 2; ++view) {
+    double target = 0.0, ltc_off = 0.0, published_off = 0.0;
+    for (std::size_t i = view * 181; i < (view + 1) * 181; ++i) {
+      target += lobe["target"][i];
+      ltc_off += std::abs(lobe["ltc"][i] - lobe["target"][i]);
+      published_off += std::abs(lobe["published"][i] - lobe["target"][i]);
+    }
+    INFO("view " << view << ": target " << target << ", ltc off " << ltc_off << ", published off " << published_off);
+    CHECK(target > 0.0);
+    CHECK(ltc_off < 0.08 * target);  // 0.5 % and 3.3 % today
+    CHECK(published_off < 0.08 * target);
+  }
 }
 
 TEST_CASE("render_size 0 leaves the render out") {

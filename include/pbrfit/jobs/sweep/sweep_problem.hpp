@@ -61,7 +61,23 @@ class CellTarget {
 
 // A check render of the finished table (optional): images of a scene shaded by the last level's fits (as an
 // engine would use them) and by ground truth, one image per value of `image_axis`, each reading the last
-// level's cells `cells[image]` (flat indices, in the order render() receives their outputs).
+// level's cells `cells[image]` (flat indices, in the order render() receives their outputs). With `curves`,
+// each image also has curves over (sets, positions) per curve layer (LTC tables: the lobes in the plane of
+// incidence at two views), computed with the image's first band and written to `<model>/<curves.group>`.
+struct RenderCurves {
+  std::string group, description;
+  std::string set_axis, set_description;
+  std::vector<double> sets;
+  std::string position_axis, position_description;
+  std::vector<double> positions;
+  struct Layer {
+    std::string name, description;
+  };
+  std::vector<Layer> layers;
+
+  std::size_t size() const { return layers.size() * sets.size() * positions.size(); }
+};
+
 struct RenderPlan {
   std::string description;  // the scene, for the result group
   std::size_t resolution = 0;  // pixels a side
@@ -75,6 +91,7 @@ struct RenderPlan {
     std::string name, description;
   };
   std::vector<Layer> layers;  // per model
+  std::optional<RenderCurves> curves;
 };
 
 class SweepProblem {
@@ -93,8 +110,9 @@ class SweepProblem {
   // The check render of a finished table over the last level's grid, if the problem has one.
   virtual std::optional<RenderPlan> render_plan(const pbrfit::sweep::LevelGrid&) const { return std::nullopt; }
   // Rows [first_row, first_row + rows) of image `image` of model `model` (an index into models()): layers x
-  // rows x resolution values, layer-major, each layer row-major from its top row; `outputs` are the model's
-  // outputs at plan.cells[image], in order. Pure; throws RunError where a pixel cannot be computed.
+  // rows x resolution values, layer-major, each layer row-major from its top row, then for the first band
+  // (first_row 0) the image's curves (layers x sets x positions); `outputs` are the model's outputs at
+  // plan.cells[image], in order. Pure; throws RunError where a pixel cannot be computed.
   virtual std::vector<double> render(std::size_t model, const RenderPlan& plan, std::size_t image,
                                      std::size_t first_row, std::size_t rows,
                                      std::span<const std::vector<double>> outputs) const;

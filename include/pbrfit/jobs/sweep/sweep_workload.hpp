@@ -16,7 +16,8 @@
 //
 // Check render (problems with a RenderPlan, e.g. LTC tables): a last stage has one item per model, image and
 // band of rows, whose input is the last level's fits of the cells the image reads; it writes `<model>/render` over
-// (image axis, row, column) with a table per layer of the plan (docs/results-sweep.md).
+// (image axis, row, column) with a table per layer of the plan, and with curves `<model>/<curves group>` over
+// (image axis, set, position) (docs/results-sweep.md).
 #include <limits>
 #include <optional>
 #include <string>
@@ -109,6 +110,7 @@ class SweepWorkload final : public runtime::StagedWorkload<SweepSummary> {
   void check_render(const StageItem& at, const RenderImage& image) const;
   std::vector<store::Block> render_blocks(const StageItem& at, const RenderImage& image) const;
   store::Group render_group(std::size_t model) const;
+  store::Group curves_group(std::size_t model) const;
 
   SweepSettings settings_;
   std::vector<ModelInfo> models_;  // the job's models, in job order

@@ -17,7 +17,7 @@ from ...generic import Renderer, guarded
 from ...statistics import number
 from .. import register
 from .check_render import check_render_figure, image_errors, is_render_group, render_images
-from .lobe_figure import GGX_MODELS, lobe_figure
+from .lobe_figure import GGX_MODELS, file_lobe_figure, is_lobes_group, lobe_figure
 from .parameter_curves import drawable, parameter_curves_figure
 from .ratio_figure import error_ratio, ratio_figure
 
@@ -68,6 +68,12 @@ def _figure(report, make, alt, caption):
 
 def _lobe_parts(report, group):
     model = string_attribute(group.node, "model")
+    computed = [g for g in report.groups if is_lobes_group(g) and string_attribute(g.node, "model") == model]
+    if computed and not string_attribute(group.node, "projected_over"):
+        return _figure(report, lambda: file_lobe_figure(computed[0]), f"{group.path} lobes",
+                       f"{group.path}: the fitted LTC (dashed) beside its target, the BRDF times the cosine (solid), "
+                       f"and the published table where there is one (dotted), in the plane of incidence; from "
+                       f"{computed[0].path}, each panel scaled to the target's peak")
     by_name = {t.name: t for t in group.tables}
     if model not in GGX_MODELS or "matrix" not in by_name or "norm" not in by_name:
         return []
@@ -173,10 +179,11 @@ class SweepRenderer(Renderer):
         return [page.section(parts)]
 
     def group_section(self, report, group, anchor):
-        if is_render_group(group):
+        if is_render_group(group) or is_lobes_group(group):
             layers = page.bullet_list([escape(f"{t.path}: {t.description}") for t in group.tables])
+            where = "How the table lights a plane" if is_render_group(group) else "How good the fit is"
             return page.section(self.group_header(group, anchor) + [layers, page.paragraph(
-                "Its images are drawn above, under \"How the table lights a plane\".", "note")])
+                f"Drawn above, under \"{where}\".", "note")])
         return super().group_section(report, group, anchor)
 
     def table_figures(self, report, group, table, scale_groups):

@@ -80,3 +80,41 @@ def lobe_figure(matrix, norm, roughness, view_x):
         if k == 0:
             ax.legend(loc="lower left", fontsize=8, bbox_to_anchor=(-0.15, -0.15))
     return figure
+
+
+def is_lobes_group(group):
+    names = {t.name for t in group.tables}
+    return group.path.endswith("/lobes") and {"target", "ltc"} <= names
+
+
+def file_lobe_figure(group):
+    """The lobes the job computed (`<model>/lobes`, any BRDF): a column per image's roughness, a row per view;
+    target solid, the table dashed, the published table dotted, each panel scaled to its target's peak."""
+    node = group.node
+    target, ours = node["target"][()], node["ltc"][()]
+    published = node["published"][()] if "published" in node else None
+    if published is not None and not np.isfinite(published).any():
+        published = None
+    image_axis = next(a for a in group.axes if a.name not in ("view_degrees", "light_degrees"))
+    views, angles = node["view_degrees"][()], np.radians(node["light_degrees"][()])
+    columns, rows = target.shape[0], target.shape[1]
+    figure = new_figure(3.0 * columns, 2.6 * rows)
+    for v in range(rows):
+        for i in range(columns):
+            ax = figure.add_subplot(rows, columns, v * columns + i + 1, projection="polar")
+            ax.set_theta_zero_location("N")
+            ax.set_thetamin(-90)
+            ax.set_thetamax(90)
+            finite = target[i, v][np.isfinite(target[i, v])]
+            peak = finite.max() if finite.size and finite.max() > 0 else 1.0
+            ax.plot(angles, target[i, v] / peak, color="black", linewidth=1.5, label="target")
+            ax.plot(angles, ours[i, v] / peak, color="tab:orange", linestyle="--", linewidth=1.5, label="this table")
+            if published is not None and np.isfinite(published[i, v]).any():
+                ax.plot(angles, published[i, v] / peak, color="tab:blue", linestyle=":", linewidth=1.5,
+                        label="published")
+            ax.set_rmax(1.1)
+            ax.set_yticklabels([])
+            ax.set_title(f"{image_axis.name} {image_axis.values[i]:.2f}, view {views[v]:.0f} deg", fontsize=9)
+            if v == 0 and i == 0:
+                ax.legend(loc="lower left", fontsize=8, bbox_to_anchor=(-0.15, -0.2))
+    return figure
