@@ -77,6 +77,34 @@ note "the report shows the tables and the renders side by side"
 grep -q "mean 1 - SSIM" page/index.html || fail "the report lacks the evaluation's averages"
 grep -q "brdf/evaluation/renders: each material measured" page/index.html || fail "the report lacks the renders"
 grep -q "brdf/front: " page/index.html || fail "the report lacks the front"
+
+note "the models' BRDFs for people: simplified, equal to the exact texts, typeset, the exact text a click away"
+PYTHONPATH=$(dirname "$PBRFIT")/share/pbrfit/report "$H5PY_PYTHON" - ref.h5 page/index.html <<'PY' ||
+import sys, html, h5py, numpy as np, sympy
+from pbrfit_report.readable_expressions import Expression, plain
+page = open(sys.argv[2]).read()
+with h5py.File(sys.argv[1], "r") as f:
+    inputs = [n.strip() for n in f["brdf"].attrs["inputs"].split(",")]
+    models = f["brdf/evaluation/models"][()]
+rng = np.random.default_rng(1)
+columns = {n: rng.uniform(0.05, 0.95, 2000) for n in inputs}
+for record in models:
+    name, text = record["model"].decode(), record["expression"].decode()
+    shown = plain(text, inputs)
+    if shown == text or html.escape(shown) not in page or html.escape(text) not in page:
+        sys.exit(f"{name}: not simplified, or a form missing from the page")
+    if f'alt="{name} formula"' not in page:
+        sys.exit(f"{name}: not typeset")
+    symbols = {n: sympy.Symbol(n, real=True) for n in inputs}
+    simplified = sympy.lambdify([symbols[n] for n in inputs], sympy.sympify(shown, locals=symbols), "math")
+    ours = np.array([simplified(*(float(columns[n][k]) for n in inputs)) for k in range(2000)], dtype=float)
+    exact = Expression(text, inputs).values(columns)
+    finite = np.isfinite(exact) & (np.abs(exact) < 1e12)
+    if finite.sum() < 1000 or not np.allclose(ours[finite], exact[finite], rtol=1e-9, atol=1e-12):
+        sys.exit(f"{name}: the simplified BRDF differs from the exact text")
+    print(f"{name}: {shown}")
+PY
+  fail "a BRDF printed for people is wrong"
 for png in page/*.png; do [[ $(head -c 4 "$png" | od -An -c | tr -d ' ') == 211PNG ]] || fail "$png is not a PNG"; done
 
 note "a directory of MERL .binary files: the cached files read as real ones give the same numbers"

@@ -79,7 +79,7 @@ expect_valid_images tables 8
 note "readable expressions: fewer digits, the same printed RMSE on the training rows, the exact text a click away"
 PYTHONPATH=$(dirname "$PBRFIT")/share/pbrfit/report "$H5PY_PYTHON" - tables.h5 tables/index.html <<'PY' || fail "a readable expression is wrong"
 import html, sys, h5py, numpy as np
-from pbrfit_report.kinds.symreg.readable import Expression, rmse
+from pbrfit_report.readable_expressions import Expression, rmse
 page = open(sys.argv[2]).read()
 shorter = members = 0
 with h5py.File(sys.argv[1], "r") as f:

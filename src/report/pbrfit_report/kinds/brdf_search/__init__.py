@@ -1,11 +1,16 @@
 # `brdf_search` results (docs/results-brdf_search.md): the paper's tables first - each model's mean image
 # L2 and 1 - SSIM on the training and testing materials with the reductions against Cook-Torrance - then
-# the evaluated models, the renders side by side (measured, Cook-Torrance, found), the front over tree
-# size, and the remaining record tables. A job whose evaluation has not run yet says so.
+# the evaluated models, their BRDFs for people (simplified by SymPy with integers and pi exact, typeset;
+# the exact text a click away: readable_expressions.py), the renders side by side (measured, Cook-Torrance,
+# found), the front over tree size, and the remaining record tables. A job whose evaluation has not run yet
+# says so.
 import numpy as np
 
 from ... import html_page as page
+from ...attributes import string_attribute
+from ...formula_figure import formula_figure
 from ...generic import Renderer, guarded
+from ...readable_expressions import latex, plain
 from ...statistics import number
 from .. import register
 from .front_figure import brdf_front_figure
@@ -32,10 +37,28 @@ def _averages_markup(averages):
     return page.table(header, rows, (2, 3, 4, 5, 6))
 
 
-def _models_markup(models):
-    rows = [[m, number(r["cost"]), number(r["training_error"]), e]
+def _inputs(file):
+    return [name.strip() for name in string_attribute(file["brdf"], "inputs").split(",") if name.strip()]
+
+
+def _models_markup(models, inputs):
+    rows = [[m, number(r["cost"]), number(r["training_error"]), page.with_exact_text(plain(e, inputs), e)]
             for m, e, r in zip(_texts(models, "model"), _texts(models, "expression"), models)]
-    return page.table(["model", "size", "search error", "expression"], rows, (1, 2))
+    return page.table(["model", "size", "search error", "BRDF (simplified; the exact text a click away)"], rows,
+                      (1, 2))
+
+
+def _formula_parts(report, models, inputs):
+    """Each evaluated model's BRDF typeset, where SymPy and mathtext can lay it out on one line."""
+    parts = []
+    for name, text in zip(_texts(models, "model"), _texts(models, "expression")):
+        formula = guarded(lambda text=text: [latex(text, inputs, exact_constants=True)], name)[0]
+        if not isinstance(formula, str):
+            continue
+        made = report.figures.draw(lambda formula=formula: formula_figure(formula))
+        if made:
+            parts.append(page.image_figure(made, f"{name} formula", f"{name}: f(l, v) = the BRDF above, typeset"))
+    return parts
 
 
 def _render_parts(report, evaluation):
@@ -60,7 +83,10 @@ def _evaluation_parts(report, file):
     evaluation = file["brdf/evaluation"]
     parts = [page.heading(3, "brdf/evaluation/averages: mean errors over each material set"),
              _averages_markup(evaluation["averages"][()]),
-             page.heading(3, "brdf/evaluation/models"), _models_markup(evaluation["models"][()])]
+             page.heading(3, "brdf/evaluation/models")]
+    models, inputs = evaluation["models"][()], _inputs(file)
+    parts.append(_models_markup(models, inputs))
+    parts += guarded(lambda: _formula_parts(report, models, inputs), "brdf/evaluation/models")
     return parts + guarded(lambda: _render_parts(report, evaluation), "brdf/evaluation/renders")
 
 

@@ -8,15 +8,16 @@
 import numpy as np
 
 from ... import html_page as page
+from ...formula_figure import formula_figure
 from ...generic import Renderer, guarded
+from ...readable_expressions import latex
 from ...statistics import number
 from .. import register
-from .formula_figure import formula_figure
 from .front_figure import front_figure
 from .front_tables import anchors_markup, front_markup, recurring_markup
 from .log_figure import log_figure
 from .output_tables import is_output_group, read_output, texts
-from .readable import latex, readable_front
+from .readable import readable_front
 from .residual_figure import residual_figure, residuals
 
 SHOWN_HERE = {"front", "anchors", "log", "knee_prediction"}

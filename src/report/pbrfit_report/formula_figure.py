@@ -3,7 +3,7 @@
 # None, and the page shows the text alone.
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 
-from ...figure_parts import new_figure
+from .figure_parts import new_figure
 
 FONT_SIZE = 13
 MAX_WIDTH_INCHES = 16.0
