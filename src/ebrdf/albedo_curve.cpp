@@ -8,7 +8,7 @@
 namespace pbrfit::ebrdf {
 namespace {
 
-double cosine_at(std::size_t i, std::size_t points) {
+double albedo_cosine_at(std::size_t i, std::size_t points) {
   return min_view_cosine + (1.0 - min_view_cosine) * double(i) / double(points - 1);
 }
 
@@ -21,7 +21,7 @@ AlbedoCurve::AlbedoCurve(const BaseLobe& lobe, std::size_t points) {
   options.max_evaluations = 2'000'000;
   values_.resize(std::max<std::size_t>(points, 2));
   for (std::size_t i = 0; i < values_.size(); ++i) {
-    const auto entry = brdf::integrate_dfg(cosine_at(i, values_.size()), lobe.alpha,
+    const auto entry = brdf::integrate_dfg(albedo_cosine_at(i, values_.size()), lobe.alpha,
                                            brdf::SmithVisibility::height_correlated, options);
     values_[i] = std::clamp(entry.scale + entry.bias, 0.0, 1.0);
   }

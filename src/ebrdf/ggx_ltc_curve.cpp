@@ -11,7 +11,7 @@ namespace {
 
 constexpr double min_cosine = 0.01;
 
-double cosine_at(std::size_t i, std::size_t points) {
+double curve_cosine_at(std::size_t i, std::size_t points) {
   const double x = double(i) / double(points - 1);
   return std::max(min_cosine, 1.0 - x * x);
 }
@@ -22,7 +22,7 @@ GgxLtcCurve::GgxLtcCurve(double alpha, std::size_t points) {
   ltc::IsotropicParameters start;
   ltc::CellFitOptions options;
   for (std::size_t i = 0; i < std::max<std::size_t>(points, 2); ++i) {
-    const double cosine = cosine_at(i, std::max<std::size_t>(points, 2));
+    const double cosine = curve_cosine_at(i, std::max<std::size_t>(points, 2));
     const ltc::CellFit fit = ltc::fit_isotropic_cell(std::make_shared<brdf::GgxLobe>(alpha, cosine), start, options);
     fits_.push_back({fit.matrix, fit.moments.albedo});
     start = fit.parameters;

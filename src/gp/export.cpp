@@ -7,16 +7,11 @@
 #include <initializer_list>
 #include <string_view>
 
+#include "pbrfit/core/joined.hpp"
 #include "pbrfit/gp/live_code.hpp"
 
 namespace pbrfit::gp {
 namespace {
-
-std::string joined(std::initializer_list<std::string_view> parts) {
-  std::string text;
-  for (std::string_view part : parts) text.append(part);
-  return text;
-}
 
 template <class T>
 std::string shortest(T value) {

@@ -8,6 +8,7 @@
 #include <map>
 #include <string_view>
 
+#include "pbrfit/core/joined.hpp"
 #include "pbrfit/gp/live_code.hpp"
 
 namespace pbrfit::gp {
@@ -28,13 +29,6 @@ struct Piece {
   int level = atom;
   bool number = false;  // a non-negative numeric literal
 };
-
-// Joins pieces of text (GCC 12 warns falsely about `"literal" + std::string`).
-std::string joined(std::initializer_list<std::string_view> parts) {
-  std::string text;
-  for (std::string_view part : parts) text.append(part);
-  return text;
-}
 
 std::string parenthesized(const Piece& piece, bool needed) {
   return needed ? joined({"(", piece.text, ")"}) : piece.text;

@@ -6,12 +6,11 @@ namespace {
 
 constexpr std::uint64_t max_elements_per_block = std::uint64_t(1) << 32;
 
-bool is_signed(ValueType type) { return type == ValueType::i32 || type == ValueType::i64; }
 
 void put_number(ByteWriter& out, ValueType type, const Number& number) {
   if (type == ValueType::f32) out.put(float(number.real()));
   else if (type == ValueType::f64) out.put(number.real());
-  else if (is_signed(type)) out.put_signed_varint(number.signed_value());
+  else if (is_signed_integer(type)) out.put_signed_varint(number.signed_value());
   else out.put_varint(number.unsigned_value());
 }
 
@@ -19,7 +18,7 @@ Number get_number(ByteReader& in, ValueType type) {
   if (type == ValueType::f32) return double(in.get<float>());
   if (type == ValueType::f64) return in.get<double>();
   const std::size_t start = in.offset();
-  const Number number = is_signed(type) ? Number(in.get_signed_varint()) : Number(in.get_varint());
+  const Number number = is_signed_integer(type) ? Number(in.get_signed_varint()) : Number(in.get_varint());
   if (!holds(type, number)) throw ByteFormatError(start, std::string("value out of range for ") + type_name(type));
   return number;
 }

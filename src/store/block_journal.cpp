@@ -6,7 +6,7 @@ namespace pbrfit::store {
 
 namespace {
 
-const LogFormat format{{'P', 'B', 'R', 'F', 'I', 'T', 'B', 'J'}, 1, "block journal"};
+const LogFormat journal_format{{'P', 'B', 'R', 'F', 'I', 'T', 'B', 'J'}, 1, "block journal"};
 
 }  // namespace
 
@@ -14,7 +14,7 @@ BlockJournal BlockJournal::create(const std::string& path, const std::string& jo
   ByteWriter header;
   header.put_string(job_text);
   const Bytes record = header.take();
-  return BlockJournal(RecordLog::create(path, format, std::span(&record, 1)));
+  return BlockJournal(RecordLog::create(path, journal_format, std::span(&record, 1)));
 }
 
 BlockJournal BlockJournal::reopen(const std::string& path, std::uint64_t length) {
@@ -43,7 +43,7 @@ void replay_block_journal(const std::string& path, const std::string& job_text, 
     }
     if (in.remaining() != 0) throw ByteFormatError(in.offset(), "unexpected data after the blocks");
   };
-  read_record_log(path, format, on_record, length);
+  read_record_log(path, journal_format, on_record, length);
   if (first) throw InputError({path}, "damaged block journal: no job text");
 }
 

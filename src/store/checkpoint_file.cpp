@@ -6,7 +6,7 @@ namespace pbrfit::store {
 
 namespace {
 
-const LogFormat format{{'P', 'B', 'R', 'F', 'I', 'T', 'C', 'K'}, 2, "checkpoint"};
+const LogFormat checkpoint_format{{'P', 'B', 'R', 'F', 'I', 'T', 'C', 'K'}, 2, "checkpoint"};
 enum RecordKind : std::uint8_t { snapshot = 1, progress = 2 };
 enum ItemFlags : std::uint8_t { has_retained = 1, has_appends = 2 };
 
@@ -101,7 +101,7 @@ std::string journal_path_for(const std::string& result_path) { return result_pat
 void CheckpointFile::write_snapshot(const CheckpointState& state) {
   const Bytes record = encode_snapshot(state);
   log_.reset();
-  log_ = RecordLog::create(path_, format, std::span(&record, 1));
+  log_ = RecordLog::create(path_, checkpoint_format, std::span(&record, 1));
   written_ += log_->length();
 }
 
@@ -126,7 +126,7 @@ CheckpointReading read_checkpoint(const std::string& path) {
     if (in.remaining() != 0) throw ByteFormatError(in.offset(), "unexpected data after the record");
     first = false;
   };
-  const LogReading log = read_record_log(path, format, visit);
+  const LogReading log = read_record_log(path, checkpoint_format, visit);
   if (first) throw InputError({path}, "damaged checkpoint: it holds no snapshot");
   reading.valid_length = log.valid_length;
   reading.torn_tail = log.torn_tail;

@@ -12,7 +12,6 @@ namespace {
 constexpr std::size_t slot = 8;  // bytes per value in memory: a double, a 64-bit integer or a char*
 static_assert(sizeof(double) == slot && sizeof(std::uint64_t) == slot && sizeof(const char*) == slot);
 
-bool is_signed(ValueType type) { return type == ValueType::i32 || type == ValueType::i64; }
 
 Handle copy_of(hid_t type) { return Handle(check(H5Tcopy(type), "copy a datatype"), H5Tclose); }
 
@@ -34,7 +33,7 @@ Handle file_value_type(ValueType type) {
 Handle memory_value_type(ValueType type) {
   if (!is_numeric(type)) return h5::string_type();
   if (!is_integer(type)) return copy_of(H5T_NATIVE_DOUBLE);
-  return copy_of(is_signed(type) ? H5T_NATIVE_INT64 : H5T_NATIVE_UINT64);
+  return copy_of(is_signed_integer(type) ? H5T_NATIVE_INT64 : H5T_NATIVE_UINT64);
 }
 
 template <class ValueTypeOf>
@@ -78,7 +77,7 @@ std::vector<std::byte> pack_elements(const Table& table, const Block& block) {
   const auto put_value = [&](ValueType type) {
     if (is_integer(type)) {
       const Number& n = block.values[number++];
-      const std::uint64_t bits = is_signed(type) ? std::uint64_t(n.signed_value()) : n.unsigned_value();
+      const std::uint64_t bits = is_signed_integer(type) ? std::uint64_t(n.signed_value()) : n.unsigned_value();
       put(&bits);
     } else if (is_numeric(type)) {
       const double real = block.values[number++].real();

@@ -10,6 +10,8 @@ bool is_numeric(ValueType type) { return type != ValueType::text; }
 
 bool is_integer(ValueType type) { return is_numeric(type) && type != ValueType::f32 && type != ValueType::f64; }
 
+bool is_signed_integer(ValueType type) { return type == ValueType::i32 || type == ValueType::i64; }
+
 bool holds(ValueType type, const Number& number) {
   if (!is_integer(type)) return is_numeric(type);
   if (!number.is_integer()) return false;

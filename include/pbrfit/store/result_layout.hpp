@@ -20,6 +20,7 @@ enum class ValueType : std::uint8_t { f32, f64, i32, i64, u8, u32, u64, text };
 
 bool is_numeric(ValueType type);
 bool is_integer(ValueType type);
+bool is_signed_integer(ValueType type);  // i32, i64
 const char* type_name(ValueType type);
 // Whether an element of `type` holds `number` exactly: a real type any number, an integer type an integer
 // within its range.

@@ -121,7 +121,7 @@ spec::Keys<EbrdfSection> ebrdf_keys() {
   return k;
 }
 
-const spec::Keys<EbrdfSection>& keys() {
+const spec::Keys<EbrdfSection>& ebrdf_section_keys() {
   static const spec::Keys<EbrdfSection> keys = ebrdf_keys();
   return keys;
 }
@@ -129,14 +129,14 @@ const spec::Keys<EbrdfSection>& keys() {
 std::unique_ptr<runtime::Workload> make_ebrdf(const spec::JobSpec& job) {
   EbrdfSection start;
   start.seed = job.seed;
-  return std::make_unique<EbrdfWorkload>(keys().read(job.kind_section, std::move(start)).settings);
+  return std::make_unique<EbrdfWorkload>(ebrdf_section_keys().read(job.kind_section, std::move(start)).settings);
 }
 
 }  // namespace
 
 JobKind ebrdf_kind() {
   return {"ebrdf", "LTC mip hierarchies prefiltering a normal map under area lights (Nahmias 2022)",
-          keys().schema(), make_ebrdf};
+          ebrdf_section_keys().schema(), make_ebrdf};
 }
 
 }  // namespace pbrfit::jobs::ebrdf

@@ -54,20 +54,20 @@ spec::Keys<RenderSettings> render_keys() {
   return k;
 }
 
-const spec::Keys<RenderSettings>& keys() {
+const spec::Keys<RenderSettings>& render_section_keys() {
   static const spec::Keys<RenderSettings> keys = render_keys();
   return keys;
 }
 
 std::unique_ptr<runtime::Workload> make_render(const spec::JobSpec& job) {
-  return std::make_unique<RenderWorkload>(keys().read(job.kind_section));
+  return std::make_unique<RenderWorkload>(render_section_keys().read(job.kind_section));
 }
 
 }  // namespace
 
 JobKind ebrdf_render_kind() {
   return {"ebrdf_render", "reference renders of a prefiltered normal map: ground truth, naive and ours (Nahmias 2022)",
-          keys().schema(), make_render};
+          render_section_keys().schema(), make_render};
 }
 
 }  // namespace pbrfit::jobs::ebrdf

@@ -15,7 +15,7 @@ namespace {
 
 using pbrfit::sweep::GridAxis;
 
-std::string number_text(double value) {
+std::string bound_text(double value) {
   char text[32];
   std::snprintf(text, sizeof text, "%g", value);
   return text;
@@ -64,7 +64,7 @@ void apply_axis(const AxisKeys& item, const ProblemAxis& info, GridAxis& axis) {
   if (item.to.written) axis.upper = item.to.value;
   if (item.count.written) axis.count = std::size_t(item.count.value);
   if (item.samples.written) axis.placement = item.samples.value;
-  const auto range = "must lie in [" + number_text(info.min) + ", " + number_text(info.max) + "] for this problem";
+  const auto range = "must lie in [" + bound_text(info.min) + ", " + bound_text(info.max) + "] for this problem";
   if (axis.lower < info.min || axis.lower > info.max) (item.from.written ? item.from : item.to).reject(range);
   if (axis.upper < info.min || axis.upper > info.max) (item.to.written ? item.to : item.from).reject(range);
   if (const std::string reason = pbrfit::sweep::invalid_reason(axis); !reason.empty()) {

@@ -10,7 +10,7 @@
 namespace pbrfit::jobs::sweep {
 namespace {
 
-enum ModelIndex : std::size_t { free_amplitude, normalized };
+enum SgModelIndex : std::size_t { free_amplitude, normalized };
 
 double alpha_of(double r) { return std::max(r * r, 1e-3); }
 

@@ -13,7 +13,7 @@ namespace {
 
 using Model = std::function<double(const Vector3&)>;
 
-enum ModelIndex : std::size_t { roughness_modification, capped_roughness, representative_point, smoothed_point };
+enum SphereLightModelIndex : std::size_t { roughness_modification, capped_roughness, representative_point, smoothed_point };
 
 class SphereLightCell final : public CellTarget {
  public:
