@@ -19,6 +19,10 @@ FitErrorEstimator::FitErrorEstimator(std::shared_ptr<const brdf::Lobe> target, s
     target_samples_.push_back({l, evaluation.value, evaluation.pdf});
     base_.push_back(sample_clamped_cosine(u1, u2));
   }
+  double squared = 0.0;
+  for (const TargetSample& sample : target_samples_)
+    if (sample.pdf > 0.0) squared += sample.value * sample.value / sample.pdf;
+  target_l2_ = points > 0 ? std::sqrt(squared / static_cast<double>(points)) : 0.0;
 }
 
 // Calls accumulate(difference, pdf_target + pdf_ltc) once per sample of each strategy.
@@ -55,7 +59,7 @@ FitError FitErrorEstimator::errors(const LtcDistribution& ltc) const {
     squared += magnitude * magnitude / pdf;
   });
   const double count = static_cast<double>(points());
-  return {cubed / count, std::sqrt(squared / count)};
+  return {cubed / count, std::sqrt(squared / count), target_l2_};
 }
 
 }  // namespace pbrfit::ltc

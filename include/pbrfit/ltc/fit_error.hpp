@@ -2,6 +2,8 @@
 // How far an LTC is from a target lobe rho (brdf/lobe.hpp), over the whole sphere (Heitz et al. 2016, section 4.1):
 //   cubed = integral of |D(l) - rho(l)|^3 dl     (the paper's fitting objective, not its cube root)
 //   l2    = sqrt(integral of (D(l) - rho(l))^2 dl)
+//   target_l2 = sqrt(integral of rho(l)^2 dl), the target's own L2 norm (l2 / target_l2 is scale-free: 0 for
+//               an exact fit, 1 for an LTC of zero amplitude), from the target's samples alone
 // estimated by multiple importance sampling of both distributions with the balance heuristic: `points`
 // directions drawn from the target and `points` drawn from the LTC, each sum term divided by
 // pdf_target + pdf_ltc. One golden lattice (point_sets.hpp) drives both strategies, and the LTC's samples
@@ -23,6 +25,7 @@ namespace pbrfit::ltc {
 struct FitError {
   double cubed = 0.0;
   double l2 = 0.0;
+  double target_l2 = 0.0;
 };
 
 class FitErrorEstimator {
@@ -32,6 +35,7 @@ class FitErrorEstimator {
   double cubed_error(const LtcDistribution& ltc) const;
   FitError errors(const LtcDistribution& ltc) const;
   std::size_t points() const { return base_.size(); }
+  double target_l2() const { return target_l2_; }
 
  private:
   struct TargetSample {
@@ -45,6 +49,7 @@ class FitErrorEstimator {
   std::shared_ptr<const brdf::Lobe> target_;
   std::vector<TargetSample> target_samples_;
   std::vector<Vector3> base_;  // cosine samples the LTC transforms
+  double target_l2_ = 0.0;
 };
 
 }  // namespace pbrfit::ltc

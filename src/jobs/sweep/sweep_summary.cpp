@@ -2,7 +2,8 @@
 // worst error, the errors' distribution, the evaluations and how often the global search ran. Folded in any
 // order: minima, maxima and integer counts. The headline gives errors as percentiles over the cells (half
 // the cells and 95 % of them at most a bound), not as a range that a few degenerate cells can stretch over
-// dozens of orders of magnitude.
+// dozens of orders of magnitude; for a model with a headline output (LTC tables: the L2 error relative to
+// the target's own L2 norm) that output, in per cent, instead of the fitting objective.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -42,11 +43,12 @@ double error_bound(const SweepSummary::Model& s, double fraction) {
   return s.worst;
 }
 
-void fold(SweepSummary::Model& s, const ModelFit& fit) {
-  if (std::isfinite(fit.error)) {
-    s.best = std::min(s.best, fit.error);
-    s.worst = std::max(s.worst, fit.error);
-    ++s.error_counts[error_bin(fit.error)];
+// `summarized` is the fit's error or the model's headline output (ModelInfo::headline_output).
+void fold(SweepSummary::Model& s, const ModelFit& fit, double summarized) {
+  if (std::isfinite(summarized)) {
+    s.best = std::min(s.best, summarized);
+    s.worst = std::max(s.worst, summarized);
+    ++s.error_counts[error_bin(summarized)];
   } else {
     ++s.non_finite;
   }
@@ -60,7 +62,10 @@ void fold(SweepSummary::Model& s, const ModelFit& fit) {
 void SweepWorkload::fold_cell(Summary& sum, const StageItem& at, const CellFits& fits) const {
   ++sum.cells;
   ++sum.level_cells[std::min<std::size_t>(schedule_.cell_of(at.step, at.item()).level, summary_levels - 1)];
-  for (std::size_t m = 0; m < fits.size() && m < summary_models; ++m) fold(sum.model[m], fits[m]);
+  for (std::size_t m = 0; m < fits.size() && m < summary_models; ++m) {
+    const auto offset = models_[m].headline_offset();
+    fold(sum.model[m], fits[m], offset ? fits[m].outputs.at(*offset) : fits[m].error);
+  }
 }
 
 std::string SweepWorkload::headline_of(const Summary& sum) const {
@@ -74,12 +79,17 @@ std::string SweepWorkload::headline_of(const Summary& sum) const {
                      " cells";
   for (std::size_t m = 0; m < models_.size() && m < summary_models; ++m) {
     const SweepSummary::Model& s = sum.model[m];
-    char part[200];
-    if (s.non_finite < sum.cells)
-      std::snprintf(part, sizeof part, "; %s error: half the cells <= %.3g, 95%% <= %.3g", models_[m].name.c_str(),
+    char part[320];
+    const bool relative = !models_[m].headline_output.empty();
+    const std::string what = models_[m].name + " " + (relative ? models_[m].headline_label : "error");
+    if (s.non_finite < sum.cells && relative)
+      std::snprintf(part, sizeof part, "; %s: half the cells <= %.3g%%, 95%% <= %.3g%%", what.c_str(),
+                    100.0 * error_bound(s, 0.5), 100.0 * error_bound(s, 0.95));
+    else if (s.non_finite < sum.cells)
+      std::snprintf(part, sizeof part, "; %s: half the cells <= %.3g, 95%% <= %.3g", what.c_str(),
                     error_bound(s, 0.5), error_bound(s, 0.95));
     else
-      std::snprintf(part, sizeof part, "; %s error: none finite", models_[m].name.c_str());
+      std::snprintf(part, sizeof part, "; %s: none finite", what.c_str());
     text += part;
     std::snprintf(part, sizeof part, ", %.0f evaluations/cell, global search in %.0f%%",
                   double(s.evaluations) / double(sum.cells), 100.0 * double(s.global_runs) / double(sum.cells));

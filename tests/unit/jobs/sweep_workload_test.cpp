@@ -102,9 +102,10 @@ TEST_CASE("a sweep's results are a pure function of the job, its item and its in
   CHECK(w.headline({}) == "no cells fitted yet");
 }
 
-// The headline gives the error as bounds that half and 95 % of the cells do not exceed (percentiles by
-// 1/8-decade bins: true bounds, at most 1/8 decade above the exact percentiles), not a min..max range.
-TEST_CASE("a sweep's headline bounds the errors of half and 95 % of the cells") {
+// The headline gives an LTC table's relative L2 error (error_l2 over the target's own L2 norm) in per cent,
+// as bounds that half and 95 % of the cells do not exceed (percentiles by 1/8-decade bins: true bounds, at
+// most 1/8 decade above the exact percentiles), not a min..max range of the absolute fitting objective.
+TEST_CASE("a sweep's headline bounds the relative errors of half and 95 % of the cells") {
   const auto w = workload();
   const auto all = run_all(w);
   Bytes summary;
@@ -112,15 +113,19 @@ TEST_CASE("a sweep's headline bounds the errors of half and 95 % of the cells") 
   for (const auto& [id, result] : all) {
     w.fold_summary(summary, id, result);
     for (const auto& block : w.blocks(id, result))
-      if (block.table == "error") errors.push_back(block.values[0].real());
+      if (block.table == "error_l2_relative") errors.push_back(100.0 * block.values[0].real());
   }
+  REQUIRE(errors.size() >= 15);  // every cell of both levels
   std::sort(errors.begin(), errors.end());
+  CHECK(errors.front() > 0.0);
+  CHECK(std::isfinite(errors.back()));
   const std::string headline = w.headline(summary);
   INFO(headline);
-  const auto at = headline.find("error: half the cells <= ");
+  const auto at = headline.find("ltc relative L2 error: half the cells <= ");
   REQUIRE(at != std::string::npos);
   double half = 0.0, most = 0.0;
-  REQUIRE(std::sscanf(headline.c_str() + at, "error: half the cells <= %lf, 95%% <= %lf", &half, &most) == 2);
+  REQUIRE(std::sscanf(headline.c_str() + at, "ltc relative L2 error: half the cells <= %lf%%, 95%% <= %lf%%", &half,
+                      &most) == 2);
   const double exact_half = errors[std::size_t(std::ceil(0.5 * double(errors.size()))) - 1];
   const double exact_most = errors[std::size_t(std::ceil(0.95 * double(errors.size()))) - 1];
   const double bin = std::pow(10.0, 1.0 / 8.0) * 1.005;  // a bin, and the headline's 3 digits

@@ -47,8 +47,14 @@ struct ModelInfo {
   std::vector<optimize::Parameter> parameters;  // default bounds and transforms
   std::string error_description;               // what the `error` table holds
   std::vector<ModelOutput> outputs;
+  // The scalar output the headline summarizes instead of `error` (empty: the error), and its words; for
+  // LTC tables the relative L2 error, in per cent, which is what users compare (docs/results-sweep.md).
+  std::string headline_output = {};
+  std::string headline_label = {};
 
   std::size_t output_width() const;
+  // Where headline_output starts in a fit's outputs; nullopt for the error.
+  std::optional<std::size_t> headline_offset() const;
 };
 
 class CellTarget {

@@ -80,7 +80,7 @@ class LtcModelCell {
     const Matrix3 m = target_.matrix(from(p));
     const auto& moments = target_.moments();
     const auto ours = target_.judge(m);
-    std::vector<double> out = {ours.cubed, ours.l2};
+    std::vector<double> out = {ours.cubed, ours.l2, ours.target_l2 > 0.0 ? ours.l2 / ours.target_l2 : nan};
     std::optional<ltc::LtcDistribution> theirs;
     if (spec_.published) {
       if (published_) {
@@ -182,7 +182,10 @@ std::vector<ModelOutput> standard_outputs(const LtcModelSpec& spec, bool polygon
   const std::string heitz = "Heitz et al. 2016 (published table)";
   std::vector<ModelOutput> out = {
       {"error_cubed", "integral of |D - rho|^3 over the sphere, on the judge's finer lattice", "error"},
-      {"error_l2", "sqrt(integral of (D - rho)^2) over the sphere, on the judge's finer lattice", "error"}};
+      {"error_l2", "sqrt(integral of (D - rho)^2) over the sphere, on the judge's finer lattice", "error"},
+      {"error_l2_relative",
+       "error_l2 over the target's own L2 norm sqrt(integral of rho^2): 0 exact, 1 as far off as no lobe at all",
+       "error"}};
   if (spec.published) {
     out.push_back({"published_error_cubed", "the published texel's cubed error, same judge and amplitude",
                    "anchor_error", heitz, "error_cubed"});
@@ -269,6 +272,8 @@ class LtcProblem final : public SweepProblem {
                            "their weighted error + 0.01 x the cubed error over the lobe fit's"
                          : "the fitting objective: integral of |D - rho|^3 over the sphere (MIS, objective lattice)",
                      standard_outputs_of(spec)});
+    if (settings_.metric_points > 0)  // the judge's errors exist: the headline gives the relative one
+      for (auto& model : out) model.headline_output = "error_l2_relative", model.headline_label = "relative L2 error";
     return out;
   }
 
