@@ -7,7 +7,8 @@ MPIRUN_FLAGS ?= $(if $(filter 0,$(shell id -u)),--allow-run-as-root,) --oversubs
 
 PREFIX ?= /usr/local
 
-.PHONY: demo test build program install deb web-deps deps bench bench-ltc bench-brdf bench-ebrdf soak clean
+.PHONY: demo test build program install deb web-deps deps bench bench-ltc bench-brdf bench-ebrdf soak clean \
+        test-sanitize test-sanitize-unit fuzz
 
 # Builds only the program (the tests and benchmarks are built by `make test`).
 demo: program
@@ -51,6 +52,28 @@ bench-ebrdf: build
 soak: build
 	PBRFIT=$(abspath $(BUILD))/pbrfit PBRFIT_SOURCE_DIR=$(CURDIR) tests/soak/fault_soak.sh 20
 
+# The suite under sanitizers, built with clang in folders of their own (tests/sanitizers/run.sh,
+# docs/RELIABILITY.md): ASan + UBSan over every test, then TSan over the unit and in-process runtime tests.
+test-sanitize: deps
+	.ci/install-deps --clang
+	$(MAKE) web-deps BUILD=build-asan
+	tests/sanitizers/run.sh address,undefined build-asan all
+	$(MAKE) web-deps BUILD=build-tsan
+	tests/sanitizers/run.sh thread build-tsan unit
+
+# The ASan + UBSan unit tests alone (CI runs them after `make test`).
+test-sanitize-unit: deps
+	.ci/install-deps --clang
+	$(MAKE) web-deps BUILD=build-asan
+	tests/sanitizers/run.sh address,undefined build-asan unit
+
+# A fuzz campaign: every libFuzzer target of tests/fuzz for FUZZ_SECONDS each (default 600), two at a time,
+# built with clang, ASan and UBSan in build-fuzz/ (tests/fuzz/run.sh; figures in docs/RELIABILITY.md).
+FUZZ_SECONDS ?= 600
+fuzz: deps
+	.ci/install-deps --clang
+	tests/fuzz/run.sh $(FUZZ_SECONDS)
+
 # The npm packages of the browser and node tests (tests/web/package.json): three.js, playwright-core, ktx-parse.
 web-deps:
 	.ci/install-deps --web
@@ -79,4 +102,4 @@ deps:
 	.ci/install-deps
 
 clean:
-	rm -rf $(BUILD)
+	rm -rf $(BUILD) build-asan build-tsan build-fuzz

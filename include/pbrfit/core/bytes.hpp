@@ -85,7 +85,8 @@ class ByteReader {
     const auto count = get<std::uint64_t>();
     if (count > remaining() / sizeof(T)) throw ByteFormatError(offset_, "array length exceeds the data");
     std::vector<T> values(count);
-    std::memcpy(values.data(), bytes_.data() + offset_, count * sizeof(T));
+    // An empty vector's data() may be null, and memcpy from or to null is undefined even for 0 bytes.
+    if (count > 0) std::memcpy(values.data(), bytes_.data() + offset_, count * sizeof(T));
     offset_ += count * sizeof(T);
     return values;
   }

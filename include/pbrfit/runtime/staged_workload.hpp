@@ -79,6 +79,9 @@ class StageLocator {
 class KeptResults {
  public:
   explicit KeptResults(const ItemResults& kept, const StageLocator* plan = nullptr) : kept_(kept), plan_(plan) {}
+  // It refers to the results it is given: a temporary would be gone before the first read (ASan found a
+  // test doing that, staged_workload_test.cpp), so one does not compile.
+  explicit KeptResults(ItemResults&&, const StageLocator* = nullptr) = delete;
 
   template <class Result>
   Result at(WorkItemId id) const {

@@ -1,5 +1,6 @@
 #include "pbrfit/jobs/symreg/csv_table.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <set>
@@ -14,8 +15,9 @@ struct Field {
   std::size_t column;  // 1-based, of the field's first character
 };
 
-std::vector<Field> fields_of(std::string_view line) {
-  std::vector<Field> fields;
+// The fields of `line` into `fields` (reused from line to line: no allocation per row).
+void split_fields(std::string_view line, std::vector<Field>& fields) {
+  fields.clear();
   std::size_t start = 0;
   for (;;) {
     const std::size_t comma = line.find(',', start);
@@ -24,7 +26,7 @@ std::vector<Field> fields_of(std::string_view line) {
     while (!field.empty() && field.front() == ' ') field.remove_prefix(1), ++column;
     while (!field.empty() && field.back() == ' ') field.remove_suffix(1);
     fields.push_back({field, column});
-    if (comma == std::string_view::npos) return fields;
+    if (comma == std::string_view::npos) return;
     start = comma + 1;
   }
 }
@@ -51,6 +53,7 @@ CsvTable parse_csv(std::string_view text, const std::string& file) {
   std::vector<std::string> names;
   std::vector<std::vector<double>> columns;
   int line_number = 0;
+  std::vector<Field> fields;
   while (!text.empty()) {
     const std::size_t end = text.find('\n');
     std::string_view line = text.substr(0, end);
@@ -58,7 +61,15 @@ CsvTable parse_csv(std::string_view text, const std::string& file) {
     ++line_number;
     if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
     if (line.find_first_not_of(' ') == std::string_view::npos || line.front() == '#') continue;
-    const auto fields = fields_of(line);
+    // Fields are counted before they are split: no line makes more of them than the header may have.
+    const auto count = std::size_t(std::count(line.begin(), line.end(), ',')) + 1;
+    if (names.empty() && count > max_csv_columns)
+      throw InputError({file, line_number, 1}, "a header of " + std::to_string(count) + " columns; at most " +
+                                                   std::to_string(max_csv_columns));
+    if (!names.empty() && count != names.size())
+      throw InputError({file, line_number, 1}, "a row of " + std::to_string(count) + " fields; the header has " +
+                                                   std::to_string(names.size()));
+    split_fields(line, fields);
     if (names.empty()) {
       std::set<std::string> seen;
       for (const auto& f : fields) {
@@ -69,9 +80,8 @@ CsvTable parse_csv(std::string_view text, const std::string& file) {
       columns.resize(names.size());
       continue;
     }
-    if (fields.size() != names.size())
-      throw InputError({file, line_number, 1}, "a row of " + std::to_string(fields.size()) + " fields; the header has " +
-                                                   std::to_string(names.size()));
+    if (columns[0].size() == max_csv_rows)
+      throw InputError({file, line_number, 1}, "more than " + std::to_string(max_csv_rows) + " data rows");
     for (std::size_t k = 0; k < fields.size(); ++k) columns[k].push_back(number_of(fields[k], file, line_number));
   }
   if (names.empty() || columns[0].empty()) throw InputError({file}, "has no header line and data rows");

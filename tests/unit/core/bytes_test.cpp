@@ -23,6 +23,21 @@ TEST_CASE("bytes round-trip values, arrays and strings") {
   CHECK(in.remaining() == 0);
 }
 
+TEST_CASE("empty arrays and strings round-trip (no memcpy from an empty vector's null data)") {
+  // Under UndefinedBehaviorSanitizer this reproduces the report the quickstart job first hit in
+  // Coordinator::begin_stage: memcpy to the null data() of an empty vector.
+  ByteWriter out;
+  out.put_array(std::span<const double>());
+  out.put_string("");
+  out.put_bytes(Bytes{});
+  const Bytes bytes = out.take();
+  ByteReader in(bytes);
+  CHECK(in.get_array<double>().empty());
+  CHECK(in.get_string().empty());
+  CHECK(in.get_bytes().empty());
+  CHECK(in.remaining() == 0);
+}
+
 TEST_CASE("variable-length integers round-trip, small magnitudes in one byte") {
   const std::vector<std::int64_t> values = {0, -1, 1, -64, 63, -65, std::numeric_limits<std::int64_t>::min(),
                                             std::numeric_limits<std::int64_t>::max()};

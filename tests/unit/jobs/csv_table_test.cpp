@@ -40,3 +40,25 @@ TEST_CASE("malformed CSV files are refused at the line and column of the problem
   CHECK(refusal("") == "d.csv: error: has no header line and data rows");
   CHECK(refusal(std::string("x\n1\0", 4)) == "d.csv:2:1: error: expected a finite number, got '1\\x00'");
 }
+
+// Hostile sizes are refused at the line that exceeds them, before the table grows past the limits.
+TEST_CASE("a CSV file of too many columns or rows is refused at the line that exceeds the limit") {
+  using pbrfit::jobs::symreg::max_csv_columns;
+  using pbrfit::jobs::symreg::max_csv_rows;
+  std::string header;
+  for (std::size_t k = 0; k < max_csv_columns; ++k) header += (k ? ",c" : "c") + std::to_string(k);
+  std::string row = "1";
+  for (std::size_t k = 1; k < max_csv_columns; ++k) row += ",1";
+  CHECK_NOTHROW(parse_csv(header + "\n" + row + "\n", "d.csv"));  // at the limit: accepted
+  CHECK(refusal(header + ",extra\n" + row + ",1\n") ==
+        "d.csv:1:1: error: a header of " + std::to_string(max_csv_columns + 1) + " columns; at most " +
+            std::to_string(max_csv_columns));
+  std::string rows = "x\n";
+  rows.reserve(2 * max_csv_rows + 8);
+  for (std::size_t r = 0; r < max_csv_rows; ++r) rows += "1\n";
+  CHECK(parse_csv(rows, "d.csv").rows() == max_csv_rows);  // at the limit: accepted
+  rows += "2\n";
+  CHECK(refusal(rows) == "d.csv:" + std::to_string(max_csv_rows + 2) + ":1: error: more than " +
+                             std::to_string(max_csv_rows) + " data rows");
+}
+

@@ -151,7 +151,8 @@ TEST_CASE("a staged workload refuses results it cannot read and stages past its 
   truncated.pop_back();
   CHECK_THROWS_AS(toy.blocks({0, 0}, truncated), RunError);
   CHECK_THROWS_AS(toy.item_count(3), RunError);
-  const runtime::KeptResults none{ItemResults{}};
+  const ItemResults nothing;
+  const runtime::KeptResults none{nothing};
   CHECK_THROWS_AS(none.at<Grown>({0, 0}), std::logic_error);  // a result the plan did not keep
 }
 

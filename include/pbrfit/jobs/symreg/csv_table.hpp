@@ -3,7 +3,10 @@
 // around fields ignored, '#' lines and empty lines skipped, CRLF accepted).
 //
 // Contract: parse_csv throws InputError at FILE:LINE:COL for a field that is not a finite number, a row
-// with another number of fields than the header, a duplicate or empty column name, or no data rows.
+// with another number of fields than the header, a duplicate or empty column name, no data rows, or more
+// than max_csv_columns columns or max_csv_rows rows (refused at the line that exceeds them, before it is
+// stored: a hostile file cannot make the table outgrow these bounds).
+#include <cstddef>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -11,6 +14,9 @@
 #include "pbrfit/core/error.hpp"
 
 namespace pbrfit::jobs::symreg {
+
+inline constexpr std::size_t max_csv_columns = 1024;
+inline constexpr std::size_t max_csv_rows = std::size_t(1) << 24;  // 16 Mi rows
 
 class CsvTable {
  public:

@@ -1,0 +1,75 @@
+#!/usr/bin/env bash
+# A fuzz campaign (make fuzz): builds the libFuzzer targets with clang, ASan and UBSan in build-fuzz/, then
+# runs each for SECONDS (default 600), two at a time, from its seeds (tests/fuzz/corpus/<target>/, plus
+# the shipped and test job files for job_file) and its dictionary (tests/fuzz/dict/<target>.dict).
+#   tests/fuzz/run.sh [SECONDS] [TARGET...]
+# Each target's new corpus grows in build-fuzz/corpus/<target>/; a crash, hang (10 s per input) or
+# allocation beyond 2 GiB leaves its input in build-fuzz/findings/<target>/ and fails the campaign. The
+# summary (executions, coverage, findings per target) is build-fuzz/summary.txt.
+set -euo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
+source_dir=$(cd "$here/../.." && pwd)
+build=${BUILD_FUZZ:-$source_dir/build-fuzz}
+seconds=${1:-600}; shift || true
+targets=("$@")
+[[ ${#targets[@]} -gt 0 ]] || targets=(job_file expression csv merl image radiance_hdr checkpoint journal result_file)
+[[ $seconds =~ ^[0-9]+$ && $seconds -gt 0 ]] || { echo "run.sh: SECONDS must be a positive whole number, not '$seconds'" >&2; exit 2; }
+
+cmake -S "$source_dir" -B "$build" -DCMAKE_BUILD_TYPE=Release -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
+  -DPBRFIT_SANITIZE=address,undefined -DPBRFIT_FUZZ=ON -DBUILD_TESTING=OFF >/dev/null
+cmake --build "$build" -j 2 --target "${targets[@]/#/fuzz_}"
+
+# The MERL format has one size (34,992,012 bytes): a valid file, made here, seeds its target.
+merl_seed=$build/seeds/merl
+if [[ ! -f $merl_seed/valid.binary ]]; then
+  mkdir -p "$merl_seed"
+  /usr/bin/python3 -c "
+import struct, sys
+n = 90 * 90 * 180 * 3
+with open(sys.argv[1], 'wb') as f:
+    f.write(struct.pack('<3i', 90, 90, 180))
+    f.write(struct.pack('<%dd' % n, *((i % 97) / 97.0 for i in range(n))))" "$merl_seed/valid.binary"
+fi
+
+export ASAN_OPTIONS="detect_leaks=1:allocator_may_return_null=0"
+export LSAN_OPTIONS="suppressions=$source_dir/tests/sanitizers/lsan.supp"
+export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+summary=$build/summary.txt
+: >"$summary"
+
+campaign() {
+  local target=$1 corpus=$build/corpus/$1 findings=$build/findings/$1 seeds=("$here/corpus/$1") extra=()
+  mkdir -p "$corpus" "$findings"
+  case $target in
+    job_file) seeds+=("$source_dir/jobs" "$source_dir/tests/jobs" "$source_dir/tests/bad_jobs") ;;
+    merl) seeds+=("$merl_seed"); extra+=(-max_len=34992012 -rss_limit_mb=4096) ;;
+    checkpoint|journal|result_file) extra+=(-max_len=200000) ;;
+  esac
+  [[ -f $here/dict/$target.dict ]] && extra+=(-dict="$here/dict/$target.dict")
+  local log=$build/fuzz-$target.log
+  set +e
+  (cd "$build" && TMPDIR=$build "$build/tests/fuzz/fuzz_$target" "$corpus" "${seeds[@]}" -max_total_time="$seconds" \
+     -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix="$findings/" "${extra[@]}") >"$log" 2>&1
+  local status=$?
+  set -e
+  local runs cov found
+  runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
+  cov=$(grep -o 'cov: [0-9]*' "$log" | tail -1 | tr -dc 0-9)
+  found=$(find "$findings" -type f | wc -l)
+  printf '%-13s exit %3s  executions %10s  coverage (edges) %6s  findings %s\n' "$target" "$status" "${runs:-?}" \
+    "${cov:-?}" "$found" >>"$summary"
+}
+
+running=0
+for target in "${targets[@]}"; do
+  campaign "$target" &
+  running=$((running + 1))
+  if (( running == 2 )); then wait -n || true; running=$((running - 1)); fi
+done
+wait || true
+sort "$summary" -o "$summary"
+cat "$summary"
+if grep -qv "findings 0$" "$summary" || grep -q "exit  *[1-9]" "$summary"; then
+  echo "run.sh: findings (inputs under $build/findings/); logs: $build/fuzz-<target>.log" >&2
+  exit 1
+fi
