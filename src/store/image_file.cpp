@@ -9,7 +9,7 @@
 
 namespace pbrfit::store {
 
-Rgb8Image read_rgb8_image(const std::string& path) {
+Rgb8Image read_rgb8_image(const std::string& path, const std::function<void(std::size_t, std::size_t)>& check_size) {
   const Bytes bytes = read_whole_file(path, max_image_file_bytes);
   const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
   const int length = static_cast<int>(bytes.size());
@@ -19,6 +19,7 @@ Rgb8Image read_rgb8_image(const std::string& path) {
   if (width <= 0 || height <= 0 || std::size_t(width) > max_image_side || std::size_t(height) > max_image_side)
     throw InputError({path}, "picture of " + std::to_string(width) + " x " + std::to_string(height) +
                                  " pixels; at most " + std::to_string(max_image_side) + " per side");
+  if (check_size) check_size(std::size_t(width), std::size_t(height));
   std::unique_ptr<unsigned char, void (*)(void*)> pixels(
       stbi_load_from_memory(data, length, &width, &height, &channels, 3), stbi_image_free);
   if (!pixels) throw InputError({path}, std::string("cannot decode the picture (") + stbi_failure_reason() + ")");

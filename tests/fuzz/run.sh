@@ -3,7 +3,7 @@
 # runs each for SECONDS (default 600), two at a time, from its seeds (tests/fuzz/corpus/<target>/, plus
 # the shipped and test job files for job_file) and its dictionary (tests/fuzz/dict/<target>.dict).
 #   tests/fuzz/run.sh [SECONDS] [TARGET...]
-# Each target's new corpus grows in build-fuzz/corpus/<target>/; a crash, hang (10 s per input) or
+# Each target's new corpus grows in build-fuzz/corpus/<target>/; a crash, hang (25 s per input) or
 # allocation beyond 2 GiB leaves its input in build-fuzz/findings/<target>/ and fails the campaign. The
 # summary (executions, coverage, findings per target) is build-fuzz/summary.txt.
 set -euo pipefail
@@ -49,7 +49,7 @@ campaign() {
   local log=$build/fuzz-$target.log
   set +e
   (cd "$build" && TMPDIR=$build "$build/tests/fuzz/fuzz_$target" "$corpus" "${seeds[@]}" -max_total_time="$seconds" \
-     -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix="$findings/" "${extra[@]}") >"$log" 2>&1
+     -timeout=25 -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix="$findings/" "${extra[@]}") >"$log" 2>&1
   local status=$?
   set -e
   local runs cov found

@@ -7,6 +7,7 @@
 // or TGA picture, truncated or corrupt data, or more than max_image_side pixels on a side.
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,10 @@ struct Rgb8Image {
   std::vector<std::uint8_t> pixels;  // row-major from the top, R G B adjacent
 };
 
-Rgb8Image read_rgb8_image(const std::string& path);
+// `check_size`, when given, sees the header's width and height before any pixel is decoded and may refuse
+// them by throwing (a caller with a tighter limit than max_image_side, e.g. normal maps, refuses a large
+// picture without its pixels being allocated).
+Rgb8Image read_rgb8_image(const std::string& path,
+                          const std::function<void(std::size_t width, std::size_t height)>& check_size = {});
 
 }  // namespace pbrfit::store

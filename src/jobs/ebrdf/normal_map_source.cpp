@@ -12,11 +12,13 @@ namespace {
 namespace eb = pbrfit::ebrdf;
 
 eb::NormalMap read_normal_map_file(const std::string& path) {
-  const store::Rgb8Image image = store::read_rgb8_image(path);
-  if (image.width != image.height || !eb::is_power_of_two(image.width) || image.width > max_normal_map_side)
-    throw InputError({path}, "a normal map must be square with a power-of-two side of at most " +
-                                 std::to_string(max_normal_map_side) + " pixels; this one is " +
-                                 std::to_string(image.width) + " x " + std::to_string(image.height));
+  // The shape is checked from the picture's header, before its pixels are decoded.
+  const store::Rgb8Image image = store::read_rgb8_image(path, [&](std::size_t width, std::size_t height) {
+    if (width != height || !eb::is_power_of_two(width) || width > max_normal_map_side)
+      throw InputError({path}, "a normal map must be square with a power-of-two side of at most " +
+                                   std::to_string(max_normal_map_side) + " pixels; this one is " +
+                                   std::to_string(width) + " x " + std::to_string(height));
+  });
   return eb::decode_normal_map(image.width, image.pixels);
 }
 

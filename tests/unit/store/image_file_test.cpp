@@ -1,6 +1,7 @@
 // PNG and TGA pictures (normal maps): decoded to 8-bit RGB, and hostile sizes refused from the header,
 // before stb_image allocates for the pixels.
 #include <catch2/catch_test_macros.hpp>
+#include <catch2/matchers/catch_matchers.hpp>
 
 #include <fstream>
 #include <string>
@@ -69,4 +70,18 @@ TEST_CASE("pictures too large a side are refused from the header, before decodin
   CHECK(refusal(path).starts_with(path + ": error: cannot decode the picture ("));
   write_raw(path, "not a picture at all");
   CHECK(refusal(path).starts_with(path + ": error: not a PNG or TGA picture ("));
+}
+
+TEST_CASE("a caller's own size check sees the header's size before any pixel is decoded") {
+  const auto path = temporary_path("large-normal-map.png");
+  write_raw(path, png_header(4096, 4096));  // the header alone: decoding would fail, and allocate 48 MiB first
+  std::size_t seen_width = 0, seen_height = 0;
+  const auto too_large = [&](std::size_t width, std::size_t height) {
+    seen_width = width, seen_height = height;
+    throw InputError({path}, "too large for a normal map");
+  };
+  CHECK_THROWS_WITH(store::read_rgb8_image(path, too_large), path + ": error: too large for a normal map");
+  CHECK(seen_width == 4096);
+  CHECK(seen_height == 4096);
+  CHECK(refusal(path).starts_with(path + ": error: cannot decode the picture ("));  // without the check
 }
