@@ -38,8 +38,9 @@ summary=$build/summary.txt
 : >"$summary"
 
 campaign() {
-  local target=$1 corpus=$build/corpus/$1 findings=$build/findings/$1 seeds=("$here/corpus/$1") extra=()
+  local target=$1 corpus=$build/corpus/$1 findings=$build/findings/$1 seeds=() extra=()
   mkdir -p "$corpus" "$findings"
+  [[ -d $here/corpus/$1 ]] && seeds+=("$here/corpus/$1")
   case $target in
     job_file) seeds+=("$source_dir/jobs" "$source_dir/tests/jobs" "$source_dir/tests/bad_jobs") ;;
     merl) seeds+=("$merl_seed"); extra+=(-max_len=34992012 -rss_limit_mb=4096) ;;
@@ -54,7 +55,7 @@ campaign() {
   set -e
   local runs cov found
   runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
-  cov=$(grep -o 'cov: [0-9]*' "$log" | tail -1 | tr -dc 0-9)
+  cov=$(grep -o 'cov: [0-9]*' "$log" | tail -1 | tr -dc 0-9 || true)
   found=$(find "$findings" -type f | wc -l)
   printf '%-13s exit %3s  executions %10s  coverage (edges) %6s  findings %s\n' "$target" "$status" "${runs:-?}" \
     "${cov:-?}" "$found" >>"$summary"
@@ -69,6 +70,10 @@ done
 wait || true
 sort "$summary" -o "$summary"
 cat "$summary"
+if (( $(wc -l <"$summary") != ${#targets[@]} )); then
+  echo "run.sh: $(( ${#targets[@]} - $(wc -l <"$summary") )) campaign(s) did not report; logs: $build/fuzz-<target>.log" >&2
+  exit 1
+fi
 if grep -qv "findings 0$" "$summary" || grep -q "exit  *[1-9]" "$summary"; then
   echo "run.sh: findings (inputs under $build/findings/); logs: $build/fuzz-<target>.log" >&2
   exit 1
