@@ -70,7 +70,7 @@ test-sanitize-unit: deps
 # A fuzz campaign: every libFuzzer target of tests/fuzz for FUZZ_SECONDS each (default 600), two at a time,
 # built with clang, ASan and UBSan in build-fuzz/ (tests/fuzz/run.sh; figures in docs/RELIABILITY.md).
 FUZZ_SECONDS ?= 600
-fuzz: deps
+fuzz: deps program
 	.ci/install-deps --clang
 	tests/fuzz/run.sh $(FUZZ_SECONDS)
 

@@ -374,9 +374,7 @@ texture::Texture ebrdf_texture(const std::string& path, const store::ResultSumma
   return t;
 }
 
-}  // namespace
-
-std::vector<std::string> exportable_tables(const std::string& path, const store::ResultSummary& s, const std::string& model) {
+std::vector<std::string> exportable_tables_of(const std::string& path, const store::ResultSummary& s, const std::string& model) {
   if (s.job_kind == "lut") return {has_dataset(path, "dfg", "scale") ? "dfg" : "disney_diffuse"};
   if (s.job_kind == "sweep") return sweep_tables(path, final_level(path, chosen_model(path, model)));
   if (s.job_kind == "ebrdf") {
@@ -388,7 +386,7 @@ std::vector<std::string> exportable_tables(const std::string& path, const store:
   return {};
 }
 
-texture::Texture table_texture(const std::string& path, const store::ResultSummary& s, const TableRequest& request) {
+texture::Texture table_texture_of(const std::string& path, const store::ResultSummary& s, const TableRequest& request) {
   if (s.state != store::RunStatus::complete)
     refuse(path, "is " + quote(store::run_status_name(s.state)) + ", not complete: export its tables once the job has finished");
   if (s.job_kind == "lut") return lut_texture(path, s, request);
@@ -396,6 +394,27 @@ texture::Texture table_texture(const std::string& path, const store::ResultSumma
   if (s.job_kind == "ebrdf") return ebrdf_texture(path, s, request);
   refuse(path, "is a '" + s.job_kind + "' result, which holds no tables to export as textures (lut, sweep and ebrdf "
                "results do; a symreg or brdf_search front member exports as a function with --format hlsl, glsl or cpp)");
+}
+
+// A result file whose tables cannot be read (damaged after its summary attributes) is the user's input:
+// refused naming it, as a file that does not open is.
+template <class Read>
+auto reading(const std::string& path, Read&& read) {
+  try {
+    return read();
+  } catch (const RunError& e) {
+    refuse(path, std::string("is damaged: ") + e.what());
+  }
+}
+
+}  // namespace
+
+std::vector<std::string> exportable_tables(const std::string& path, const store::ResultSummary& s, const std::string& model) {
+  return reading(path, [&] { return exportable_tables_of(path, s, model); });
+}
+
+texture::Texture table_texture(const std::string& path, const store::ResultSummary& s, const TableRequest& request) {
+  return reading(path, [&] { return table_texture_of(path, s, request); });
 }
 
 }  // namespace pbrfit::jobs

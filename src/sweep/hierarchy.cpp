@@ -26,10 +26,24 @@ bool same_counts(const std::vector<GridAxis>& a, const std::vector<GridAxis>& b)
   return true;
 }
 
+// The first index whose node is nearest to value (ties to the lower index), in O(log n): an axis's nodes
+// are monotone, so the distance falls, then rises. k is the first node at or past value; the nearest is
+// k - 1 or k, then moved left over nodes exactly as near (left of k the distance only falls). The same
+// index as a scan of every node, which made a fine level of n cells cost n^2 / 2 (minutes at 2^20).
 std::size_t nearest_index(const GridAxis& coarse, double value) {
-  std::size_t best = 0;
-  for (std::size_t j = 1; j < coarse.count; ++j)
-    if (std::abs(coarse.value(j) - value) < std::abs(coarse.value(best) - value)) best = j;
+  if (coarse.count <= 1) return 0;
+  const bool rising = coarse.value(coarse.count - 1) >= coarse.value(0);
+  std::size_t first = 0, last = coarse.count;  // k in [first, last]
+  while (first < last) {
+    const std::size_t middle = first + (last - first) / 2;
+    const double node = coarse.value(middle);
+    if (rising ? node >= value : node <= value) last = middle;
+    else first = middle + 1;
+  }
+  const auto distance = [&](std::size_t j) { return std::abs(coarse.value(j) - value); };
+  std::size_t best = first < coarse.count ? first : coarse.count - 1;
+  if (first > 0 && distance(first - 1) <= distance(best)) best = first - 1;
+  while (best > 0 && distance(best - 1) == distance(best)) --best;
   return best;
 }
 

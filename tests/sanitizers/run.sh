@@ -5,6 +5,7 @@
 #     SANITIZERS: address,undefined (ASan + UBSan) or thread (TSan)
 #     unit: the unit tests (the in-process runtime tests among them); all: every test but the layer checks
 #     (compile checks, nothing to sanitize) and, under TSan, the MPI tests (docs/RELIABILITY.md says why).
+#   TESTS=regex runs only the tests of that part whose names match (to check a fix again).
 # Reports go to BUILD_DIR/sanitizer-reports/ (one file per reporting process); the options and the
 # suppressions of libraries that are not pbrfit's are in this folder.
 set -euo pipefail
@@ -22,6 +23,7 @@ case $part in
   *) echo "run.sh: part must be unit or all, not '$part'" >&2; exit 2 ;;
 esac
 [[ $sanitizers == thread && $part == all ]] && select=(-L unit -E '^layers:')
+[[ -n ${TESTS:-} ]] && select+=(-R "$TESTS")
 
 start=$SECONDS
 cmake -S "$source_dir" -B "$build" -DCMAKE_BUILD_TYPE=Release -DCMAKE_C_COMPILER=clang \

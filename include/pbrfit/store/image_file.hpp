@@ -4,7 +4,8 @@
 // Contract: read_rgb8_image reads only a regular file of at most max_image_file_bytes, decodes it from
 // memory and returns its pixels as R G B (a grey or palette image is expanded, alpha dropped, 16-bit
 // channels reduced to 8); anything else throws InputError at the file (line 0) with the reason: not a PNG
-// or TGA picture, truncated or corrupt data, or more than max_image_side pixels on a side.
+// or TGA picture, truncated or corrupt data (a PNG chunk stating more bytes than the file holds is refused
+// before stb_image allocates for it), or more than max_image_side pixels on a side.
 #include <cstddef>
 #include <cstdint>
 #include <functional>

@@ -200,6 +200,7 @@ LtcModelSpec material_model(const BrdfKeys& brdf, LtcProblemSettings& s) {
   const std::string& name = brdf.material.value;
   jobs::brdf::MaterialSource source;
   if (brdf.merl_directory.written) source.merl_directory = brdf.merl_directory.value;
+  source.cache_directory = brdf.cache.value;
   auto table = std::make_shared<const pbrfit::brdf::MerlTable>(jobs::brdf::load_material(name, source));
   s.roughness_axis = false;
   s.attributes["material"] = name;
@@ -253,6 +254,9 @@ spec::Keys<BrdfKeys> brdf_keys() {
            &BrdfKeys::material);
   k.string("merl_directory", "where the MERL .binary files are (default: the neural stand-ins of data/merl_nbrdf)",
            &BrdfKeys::merl_directory);
+  k.string("cache", "where the stand-in evaluated on the MERL grid is kept as a .binary file ('' for none)",
+           &BrdfKeys::cache)
+      .defaults_to(std::string("results/merl-cache"));
   k.string("name", "the table's model and result group (default: 'expression', or the material's name)",
            &BrdfKeys::name);
   return k;
@@ -269,6 +273,7 @@ std::unique_ptr<SweepProblem> make_ltc(const SweepKeys& sweep) {
   if (brdf.expression.written == brdf.material.written)
     sweep.brdf.reject("needs either 'expression' (a BRDF written out) or 'material' (a MERL material), not both");
   if (brdf.merl_directory.written && !brdf.material.written) brdf.merl_directory.reject("applies to 'material' only");
+  if (brdf.cache.written && !brdf.material.written) brdf.cache.reject("applies to 'material' only");
   if (sweep.models.written) sweep.models.reject("does not apply to a 'brdf' section (it makes one model)");
   s.models.push_back(brdf.expression.written ? expression_model(sweep, brdf, s) : material_model(brdf, s));
   return make_ltc_problem(std::move(s));

@@ -178,6 +178,19 @@ std::unique_ptr<runtime::Workload> make_sweep(const spec::JobSpec& job) {
   return std::make_unique<SweepWorkload>(sweep_settings(job.kind_section));
 }
 
+// A fit per cell: 4 Mi cells (2,048 x 2,048) is far beyond any table a sweep finishes, and bounds what the
+// schedule allocates for a job file's axes (two axes of 2^20 would ask for 2^40 cells).
+constexpr std::size_t max_sweep_cells = std::size_t{1} << 22;
+
+void reject_huge_grid(const SweepKeys& s, const std::vector<pbrfit::sweep::GridAxis>& axes) {
+  std::size_t cells = 1;
+  for (const auto& axis : axes) {
+    if (axis.count > max_sweep_cells / cells)
+      s.axes.reject("make a grid of more than " + std::to_string(max_sweep_cells) + " cells (4 Mi, a fit each)");
+    cells *= axis.count;
+  }
+}
+
 // The settings the keys describe, checked against the problem they name.
 SweepSettings settings_of(const SweepKeys& s) {
   const ProblemEntry& entry = find_problem(s.problem.value);
@@ -190,6 +203,7 @@ SweepSettings settings_of(const SweepKeys& s) {
   settings.models = chosen_models(s, models);
   settings.parameters = parameters(s, models, settings.models);
   settings.axes = grid_axes(s, settings.problem->axes());
+  reject_huge_grid(s, settings.axes);
   settings.levels = std::size_t(s.levels.value);
   const std::size_t possible = pbrfit::sweep::max_level_count(settings.axes);
   if (settings.levels > possible)

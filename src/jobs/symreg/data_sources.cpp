@@ -92,10 +92,10 @@ spec::Keys<DatasetSection> make_dataset_keys() {
   k.choice("generator", generator_names(), "a built-in benchmark problem (Nguyen-1..8: nguyen1 ... nguyen8)",
            &S::generator);
   k.integer("points", "generator: training points, uniform on the problem's range", &S::points)
-      .range(2, 10'000'000)
+      .range(2, 1'000'000)
       .defaults_to(int64_t{20});
   k.integer("test_points", "generator: fresh points the front is also judged on", &S::test_points)
-      .range(0, 10'000'000)
+      .range(0, 1'000'000)
       .defaults_to(int64_t{10'000});
   k.integer("sample_seed", "generator: the seed of the points (the job's seed drives the search)", &S::sample_seed)
       .at_least(0)

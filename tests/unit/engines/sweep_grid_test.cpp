@@ -1,11 +1,14 @@
 // Sweep grids: axis samples, levels of a hierarchy, nearest parents and the fitting schedule.
 #include <catch2/catch_test_macros.hpp>
 
+#include <cmath>
 #include <set>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include "pbrfit/sweep/hierarchy.hpp"
+#include "pbrfit/sweep/level_grid.hpp"
 #include "pbrfit/sweep/sweep_schedule.hpp"
 
 using namespace pbrfit::sweep;
@@ -70,6 +73,30 @@ TEST_CASE("a fine cell's parent is the coarse cell nearest on every axis") {
   }
   const std::vector<std::size_t> corner = {8, 4};
   CHECK(nearest_parent(fine, fine.flat_index(corner), coarse) == coarse.cell_count() - 1);
+}
+
+TEST_CASE("the nearest parent is the first nearest coarse node, found without scanning every node") {
+  // The search against a scan of every node (the first of the nearest wins), on axes of edges and centres,
+  // ranges with exactly representable and rounded nodes, and a range so narrow that nodes repeat.
+  const auto scanned = [](const GridAxis& coarse, double x) {
+    std::size_t best = 0;
+    for (std::size_t j = 1; j < coarse.count; ++j)
+      if (std::abs(coarse.value(j) - x) < std::abs(coarse.value(best) - x)) best = j;
+    return best;
+  };
+  for (Placement placement : {Placement::edges, Placement::centres})
+    for (auto [lower, upper] : {std::pair{0.0, 1.0}, std::pair{0.1, 0.7}, std::pair{-3.0, 1e-3}, std::pair{1.0, 1.0 + 4e-15}})
+      for (std::size_t count = 2; count <= 40; ++count)
+        for (std::size_t coarse_count = placement == Placement::edges ? 2 : 1; coarse_count <= count; ++coarse_count) {
+          const GridAxis f{"x", lower, upper, count, placement}, c{"x", lower, upper, coarse_count, placement};
+          const LevelGrid fine({f}), coarse({c});
+          for (std::size_t cell = 0; cell < count; ++cell)
+            REQUIRE(nearest_parent(fine, cell, coarse) == scanned(c, f.value(cell)));
+        }
+  // A fine level of 2^20 cells maps to its parents in a moment (the scan took minutes of validation).
+  const auto levels = hierarchy({edges("x", std::size_t{1} << 20)}, 2);
+  CHECK(nearest_parent(levels[1], levels[1].cell_count() - 1, levels[0]) == levels[0].cell_count() - 1);
+  CHECK(nearest_parent(levels[1], 2, levels[0]) == 1);
 }
 
 TEST_CASE("a schedule lists every cell once, after all of its sources, and knows their last readers") {

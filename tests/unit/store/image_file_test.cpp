@@ -85,3 +85,17 @@ TEST_CASE("a caller's own size check sees the header's size before any pixel is 
   CHECK(seen_height == 4096);
   CHECK(refusal(path).starts_with(path + ": error: cannot decode the picture ("));  // without the check
 }
+
+TEST_CASE("a PNG chunk claiming more bytes than the file holds is refused before stb_image allocates for it") {
+  // The image fuzz target's slow input: a 2 x 2 picture whose IDAT chunk states 1.9 GB (stb_image grew its
+  // buffer to that before reading). Any chunk, up to IEND, must lie within the file.
+  const auto path = temporary_path("chunk.png");
+  const std::string idat = big_endian(0x72000000u) + "IDAT" + std::string("\x78\x9c\x01\x00\x00", 5);
+  write_raw(path, png_header(2, 2) + idat);
+  CHECK(refusal(path) == path + ": error: PNG chunk at byte 33 claims 1912602624 bytes of data, but only 5 bytes "
+                             "follow it (truncated or corrupt picture)");
+  // The same chunk stating its true length passes this check (and is then refused by stb_image as corrupt).
+  write_raw(path, png_header(2, 2) + big_endian(1) + "IDAT" + "x" + big_endian(0) + big_endian(0) + "IEND" + big_endian(0));
+  CHECK(refusal(path).find("PNG chunk") == std::string::npos);
+  CHECK(refusal(path) != "(accepted)");
+}

@@ -78,7 +78,7 @@ struct ExpressionKeys {
 
 // `brdf` (problem `ltc`): a BRDF expression or a measured material instead of the built-in families.
 struct BrdfKeys {
-  spec::Located<std::string> expression, material, merl_directory;
+  spec::Located<std::string> expression, material, merl_directory, cache;
   std::optional<std::string> name;
 };
 
