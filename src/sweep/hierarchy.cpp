@@ -1,6 +1,8 @@
 #include "pbrfit/sweep/hierarchy.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <ranges>
 #include <stdexcept>
 #include <string>
 
@@ -26,23 +28,17 @@ bool same_counts(const std::vector<GridAxis>& a, const std::vector<GridAxis>& b)
   return true;
 }
 
-// The first index whose node is nearest to value (ties to the lower index), in O(log n): an axis's nodes
-// are monotone, so the distance falls, then rises. k is the first node at or past value; the nearest is
-// k - 1 or k, then moved left over nodes exactly as near (left of k the distance only falls). The same
-// index as a scan of every node, which made a fine level of n cells cost n^2 / 2 (minutes at 2^20).
+// The first index whose node is nearest to value (ties to the lower index), in O(log n). An axis's nodes
+// never decrease (grid_axis.hpp), so the distance falls, then rises: k, the first node at or past value,
+// or k - 1 is nearest, then moved left over nodes exactly as near. The same index as a scan of every
+// node, which made a fine level of n cells cost n^2 / 2 (minutes at 2^20).
 std::size_t nearest_index(const GridAxis& coarse, double value) {
-  if (coarse.count <= 1) return 0;
-  const bool rising = coarse.value(coarse.count - 1) >= coarse.value(0);
-  std::size_t first = 0, last = coarse.count;  // k in [first, last]
-  while (first < last) {
-    const std::size_t middle = first + (last - first) / 2;
-    const double node = coarse.value(middle);
-    if (rising ? node >= value : node <= value) last = middle;
-    else first = middle + 1;
-  }
+  const auto nodes = std::views::iota(std::size_t{0}, coarse.count);
+  const auto at = std::ranges::partition_point(nodes, [&](std::size_t j) { return coarse.value(j) < value; });
+  const std::size_t k = at == nodes.end() ? coarse.count : *at;
   const auto distance = [&](std::size_t j) { return std::abs(coarse.value(j) - value); };
-  std::size_t best = first < coarse.count ? first : coarse.count - 1;
-  if (first > 0 && distance(first - 1) <= distance(best)) best = first - 1;
+  std::size_t best = std::min(k, coarse.count - 1);
+  if (k > 0 && distance(k - 1) <= distance(best)) best = k - 1;
   while (best > 0 && distance(best - 1) == distance(best)) --best;
   return best;
 }

@@ -4,6 +4,7 @@
 
 #include "brdf_search_section.hpp"
 #include "pbrfit/jobs/brdf/material_sets.hpp"
+#include "pbrfit/jobs/brdf/material_source.hpp"
 #include "pbrfit/jobs/brdf/seed_brdfs.hpp"
 
 namespace pbrfit::jobs::brdf {
@@ -87,7 +88,7 @@ spec::Keys<BrdfSearchSection> brdf_search_keys() {
            &S::merl_directory)
       .defaults_to(std::string(""));
   k.string("cache", "where stand-ins evaluated on the MERL grid are kept as .binary files ('' for none)", &S::cache)
-      .defaults_to(std::string("results/merl-cache"));
+      .defaults_to(std::string(default_material_cache));
   k.section("scene", scene_keys(), "the sphere, its lighting and the metric's pruning", &S::scene);
   k.choice("seed_brdf", seed_names(), "the BRDF the edits start from", &S::seed_brdf)
       .defaults_to(std::string("cook_torrance"));

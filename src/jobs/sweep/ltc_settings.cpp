@@ -256,7 +256,7 @@ spec::Keys<BrdfKeys> brdf_keys() {
            &BrdfKeys::merl_directory);
   k.string("cache", "where the stand-in evaluated on the MERL grid is kept as a .binary file ('' for none)",
            &BrdfKeys::cache)
-      .defaults_to(std::string("results/merl-cache"));
+      .defaults_to(std::string(jobs::brdf::default_material_cache));
   k.string("name", "the table's model and result group (default: 'expression', or the material's name)",
            &BrdfKeys::name);
   return k;

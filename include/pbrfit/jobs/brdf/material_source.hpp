@@ -14,6 +14,9 @@
 
 namespace pbrfit::jobs::brdf {
 
+// Where job files keep the tabulated stand-ins unless they say otherwise (their `cache` key).
+inline constexpr const char* default_material_cache = "results/merl-cache";
+
 struct MaterialSource {
   std::string merl_directory;   // empty: use the stand-ins
   std::string standins;          // empty: data_directory() + "/merl_nbrdf"
