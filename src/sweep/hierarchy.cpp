@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <ranges>
 #include <stdexcept>
 #include <string>
 
@@ -33,9 +32,18 @@ bool same_counts(const std::vector<GridAxis>& a, const std::vector<GridAxis>& b)
 // or k - 1 is nearest, then moved left over nodes exactly as near. The same index as a scan of every
 // node, which made a fine level of n cells cost n^2 / 2 (minutes at 2^20).
 std::size_t nearest_index(const GridAxis& coarse, double value) {
-  const auto nodes = std::views::iota(std::size_t{0}, coarse.count);
-  const auto at = std::ranges::partition_point(nodes, [&](std::size_t j) { return coarse.value(j) < value; });
-  const std::size_t k = at == nodes.end() ? coarse.count : *at;
+  // k: the first node at or past value, by bisection (clang 14 cannot compile libstdc++ 12's iota_view,
+  // so std::ranges::partition_point over the indices is out of reach of the sanitizer builds).
+  std::size_t k = 0;
+  for (std::size_t count = coarse.count; count > 0;) {
+    const std::size_t half = count / 2;
+    if (coarse.value(k + half) < value) {
+      k += half + 1;
+      count -= half + 1;
+    } else {
+      count = half;
+    }
+  }
   const auto distance = [&](std::size_t j) { return std::abs(coarse.value(j) - value); };
   std::size_t best = std::min(k, coarse.count - 1);
   if (k > 0 && distance(k - 1) <= distance(best)) best = k - 1;
