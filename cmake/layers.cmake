@@ -59,6 +59,7 @@ function(pbrfit_module name)
   if(sources)
     add_library(${name} STATIC ${sources})
     pbrfit_unity_groups(${name} "${sources}")
+    pbrfit_kernel_set_sources(${name} "${sources}")
     target_include_directories(${name} PUBLIC ${root})
     target_link_libraries(${name} PUBLIC ${M_PUBLIC} PRIVATE ${M_PRIVATE})
   else()
@@ -68,6 +69,32 @@ function(pbrfit_module name)
   endif()
   set_property(GLOBAL APPEND PROPERTY PBRFIT_MODULES ${name})
   set_property(GLOBAL PROPERTY PBRFIT_HEADERS_${name} ${headers})
+endfunction()
+
+# Kernel sets (include/pbrfit/core/kernel_set.hpp): a file named *_isa_<set>.cpp is compiled alone (never
+# in a unity batch: it defines PBRFIT_KERNEL_ISA) with its set's instruction-set flags, without
+# contraction into FMA, so that arithmetic rounds as in the generic build, and without errno from math
+# functions (pbrfit never reads it), so that sqrt loops vectorize.
+set(PBRFIT_KERNEL_FLAGS_generic "")
+set(PBRFIT_KERNEL_FLAGS_avx2 -mavx2 -mfma)
+set(PBRFIT_KERNEL_FLAGS_avx512 -mavx2 -mfma -mavx512f -mavx512bw -mavx512dq -mavx512vl -mprefer-vector-width=512)
+function(pbrfit_kernel_set_sources target sources)
+  foreach(source IN LISTS sources)
+    if(NOT source MATCHES "_isa_([a-z0-9]+)\\.cpp$")
+      continue()
+    endif()
+    set(options -ffp-contract=off -fno-math-errno)
+    if(PBRFIT_X86_KERNELS)
+      list(APPEND options ${PBRFIT_KERNEL_FLAGS_${CMAKE_MATCH_1}})
+      # GCC 12's own AVX-512 intrinsics warn of their undefined-on-purpose operand (GCC bug 105593).
+      if(CMAKE_MATCH_1 STREQUAL "avx512" AND CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
+        list(APPEND options -Wno-maybe-uninitialized)
+      endif()
+    endif()
+    set_source_files_properties(${source} TARGET_DIRECTORY ${target} PROPERTIES SKIP_UNITY_BUILD_INCLUSION ON
+                                COMPILE_OPTIONS "${options}")
+    set_property(GLOBAL APPEND PROPERTY PBRFIT_KERNEL_SET_SOURCES ${source})
+  endforeach()
 endfunction()
 
 # One translation unit per public header of every module, compiled with that module's flags only: a

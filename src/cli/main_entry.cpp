@@ -1,16 +1,44 @@
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
+#include <cstdlib>
+#include <string>
 
+#include "exit_on_error.hpp"
 #include "pbrfit/cli/commands.hpp"
 #include "pbrfit/core/error.hpp"
+#include "pbrfit/core/kernel_set.hpp"
+#include "pbrfit/core/quoted_text.hpp"
 #include "pbrfit/core/version.hpp"
+#include "pbrfit/runtime/mpi_session.hpp"
 
 namespace pbrfit::cli {
 
+namespace {
+
+// PBRFIT_KERNELS=generic|avx2|avx512 chooses the kernel set instead of the machine's best
+// (core/kernel_set.hpp): to compare sets, or to reproduce a result of another machine's set.
+void use_kernels_from_environment() {
+  const char* text = std::getenv("PBRFIT_KERNELS");
+  if (!text || !*text) return;
+  const auto set = parse_kernel_set(text);
+  if (!set)
+    throw InputError({"PBRFIT_KERNELS"}, "must be generic, avx2 or avx512, not " + quote(text));
+  if (!kernel_set_available(*set))
+    throw InputError({"PBRFIT_KERNELS"}, "this machine cannot run the " + std::string(text) +
+                                             " kernels (it has " + available_kernel_sets() + ")");
+  use_kernel_set(*set);
+}
+
+}  // namespace
+
 int main_entry(int argc, char** argv) {
+  if (const int code = exit_on_error([] { return use_kernels_from_environment(), 0; }, runtime::launcher_rank() == 0))
+    return code;
   CLI::App app{"pbrfit: fits approximate models for physically based rendering, as MPI batch jobs"};
-  app.set_version_flag("--version", std::string("pbrfit ") + version + " (commit " + build_commit + ")");
+  app.set_version_flag("--version", std::string("pbrfit ") + version + " (commit " + build_commit + ")\nkernels: " +
+                                        std::string(kernel_set_name(active_kernel_set())) + " (this machine has " +
+                                        available_kernel_sets() + "; PBRFIT_KERNELS chooses)");
   app.require_subcommand(1);
 
   RunOptions run;

@@ -5,6 +5,7 @@
 #include "exit_on_error.hpp"
 #include "pbrfit/cli/commands.hpp"
 #include "pbrfit/core/error.hpp"
+#include "pbrfit/core/kernel_set.hpp"
 #include "pbrfit/core/quoted_text.hpp"
 #include "pbrfit/jobs/job_kinds.hpp"
 #include "pbrfit/runtime/compute_threads.hpp"
@@ -31,9 +32,21 @@ runtime::RunSettings settings_for(const spec::JobSpec& job, const RunOptions& op
   return s;
 }
 
+// Ranks on nodes of different CPU generations use the best kernel set all of them have, so that no result
+// depends on the rank that computed it (core/kernel_set.hpp). The sets nest: the least is available on all.
+KernelSet agree_on_kernel_set(const runtime::MpiSession& mpi) {
+  const auto agreed = static_cast<KernelSet>(mpi.minimum_over_ranks(static_cast<int>(active_kernel_set())));
+  if (agreed != active_kernel_set())
+    spdlog::info("rank {} uses the {} kernels, the best every rank has, instead of its own {}", mpi.rank(),
+                 kernel_set_name(agreed), kernel_set_name(active_kernel_set()));
+  use_kernel_set(agreed);
+  return agreed;
+}
+
 int run_validated(const spec::JobSpec& job, const runtime::Workload& workload, const RunOptions& options) {
   runtime::MpiSession mpi;
   runtime::setup_logging(mpi.rank(), options.verbosity);
+  const KernelSet kernels = agree_on_kernel_set(mpi);
   const auto settings = settings_for(job, options, mpi.ranks_on_this_node());
   if (settings.threads > runtime::usable_cpus())
     spdlog::warn("{} compute threads share {} CPU{} on rank {} (mpirun binds each rank to one core unless run with "
@@ -41,9 +54,9 @@ int run_validated(const spec::JobSpec& job, const runtime::Workload& workload, c
                  settings.threads, runtime::usable_cpus(), runtime::usable_cpus() == 1 ? "" : "s", mpi.rank(),
                  settings.threads);
   if (mpi.coordinator())
-    spdlog::info("job '{}' ({}) on {} rank{} x {} thread{}: {} work items -> {}", job.name, job.kind, mpi.size(),
-                 mpi.size() == 1 ? "" : "s", settings.threads, settings.threads == 1 ? "" : "s", workload.total_items(),
-                 settings.output);
+    spdlog::info("job '{}' ({}) on {} rank{} x {} thread{}, {} kernels: {} work items -> {}", job.name, job.kind,
+                 mpi.size(), mpi.size() == 1 ? "" : "s", settings.threads, settings.threads == 1 ? "" : "s",
+                 kernel_set_name(kernels), workload.total_items(), settings.output);
   return runtime::run_workload(mpi, workload, settings);
 }
 

@@ -3,8 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "block_kernels.hpp"
-#include "block_schedule.hpp"
+#include "block_kernel_sets.hpp"
 #include "error_sums.hpp"
 
 namespace pbrfit::gp {
@@ -30,16 +29,12 @@ template <class T>
 template <class Sink>
 void BatchInterpreter<T>::run(const Program& program, Sink& sink) {
   const auto schedule = detail::schedule_blocks<T>(program, columns_, slots_, constant_blocks_, block_rows);
-  const std::size_t total = rows();
-  for (std::size_t first = 0; first < total; first += block_rows) {
-    const std::size_t n = std::min(block_rows, total - first);
-    for (std::size_t s = 0; s < schedule.step_count; ++s) {
-      const auto& step = schedule.steps[s];
-      detail::run_block<T>(step.op, step.operands[0].at(first), step.operands[1].at(first), step.operands[2].at(first),
-                           step.out, n);
-    }
-    sink(first, n, schedule.output.at(first));
-  }
+  const detail::BlockSink<T> block_sink{
+      [](void* context, std::size_t first, std::size_t n, const T* values) {
+        (*static_cast<Sink*>(context))(first, n, values);
+      },
+      &sink};
+  detail::schedule_runner<T>(active_kernel_set())(schedule, rows(), block_rows, block_sink);
 }
 
 template <class T>

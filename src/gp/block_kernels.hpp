@@ -1,15 +1,23 @@
-#pragma once
 // One operator over n <= block_rows values: out[i] = apply(op, a[i], b[i], c[i]) (semantics.hpp).
-// Arithmetic and comparisons are plain loops the compiler vectorizes; transcendentals use Eigen's
-// vectorized functions. `out` never aliases an operand; operands may alias each other.
+// Arithmetic, comparisons, sqrt and rsqrt are plain loops the compiler vectorizes (bitwise the same in
+// every kernel set); other transcendentals use Eigen's vectorized functions. `out` never aliases an operand; operands may alias each other.
+//
+// Included once by each kernel set's file (block_kernels_isa_<set>.cpp, compiled for that instruction
+// set), inside a namespace named by PBRFIT_KERNEL_ISA, so that the sets' copies never meet at link time;
+// it defines that set's entry points.
+#ifndef PBRFIT_KERNEL_ISA
+#error "block_kernels.hpp is included by the block_kernels_isa_<set>.cpp files only"
+#endif
 #include <Eigen/Core>
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <numbers>
 
+#include "block_kernel_sets.hpp"
 #include "pbrfit/gp/opcode.hpp"
 
-namespace pbrfit::gp::detail {
+namespace pbrfit::gp::detail::PBRFIT_KERNEL_ISA {
 
 template <class T>
 using BlockMap = Eigen::Map<Eigen::Array<T, Eigen::Dynamic, 1>>;
@@ -32,11 +40,13 @@ void transcendental_block(Opcode op, const T* a, const T* b, T* out, std::size_t
   BlockMap<T> y(out, static_cast<Eigen::Index>(n));
   constexpr T ln2 = std::numbers::ln2_v<T>;
   switch (op) {
+    // sqrt and rsqrt as plain loops, correctly rounded in every set (Eigen's AVX-512 sqrt is a Newton
+    // approximation under its default EIGEN_FAST_MATH); -fno-math-errno lets them vectorize.
     case Opcode::sqrt:
-      y = x.abs().sqrt();
+      unary_loop(a, out, n, [](T v) { return std::sqrt(std::abs(v)); });
       break;
     case Opcode::rsqrt:
-      y = T(1) / x.abs().sqrt();
+      unary_loop(a, out, n, [](T v) { return T(1) / std::sqrt(std::abs(v)); });
       break;
     case Opcode::exp:
       y = x.exp();
@@ -118,4 +128,30 @@ void run_block(Opcode op, const T* a, const T* b, const T* c, T* out, std::size_
   }
 }
 
-}  // namespace pbrfit::gp::detail
+template <class T>
+void run_schedule(const BlockSchedule<T>& schedule, std::size_t rows, std::size_t block_rows, BlockSink<T> sink) {
+  for (std::size_t first = 0; first < rows; first += block_rows) {
+    const std::size_t n = std::min(block_rows, rows - first);
+    for (std::size_t s = 0; s < schedule.step_count; ++s) {
+      const auto& step = schedule.steps[s];
+      run_block<T>(step.op, step.operands[0].at(first), step.operands[1].at(first), step.operands[2].at(first),
+                   step.out, n);
+    }
+    sink.take(sink.context, first, n, schedule.output.at(first));
+  }
+}
+
+// The set's entry points (block_kernel_sets.hpp), defined once per set: flatten inlines every call into
+// them, Eigen's included, so that the including file emits no inline function the linker could pick for
+// another file compiled for another set (the test "layers: kernel set objects share no inline code").
+[[gnu::flatten]] void run_schedule_f32(const BlockSchedule<float>& schedule, std::size_t rows, std::size_t block_rows,
+                                       BlockSink<float> sink) {
+  run_schedule<float>(schedule, rows, block_rows, sink);
+}
+
+[[gnu::flatten]] void run_schedule_f64(const BlockSchedule<double>& schedule, std::size_t rows, std::size_t block_rows,
+                                       BlockSink<double> sink) {
+  run_schedule<double>(schedule, rows, block_rows, sink);
+}
+
+}  // namespace pbrfit::gp::detail::PBRFIT_KERNEL_ISA

@@ -32,6 +32,12 @@ int MpiSession::broadcast_from_coordinator(int value) const {
   return value;
 }
 
+int MpiSession::minimum_over_ranks(int value) const {
+  int least = value;
+  MPI_Allreduce(&value, &least, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD);
+  return least;
+}
+
 std::vector<int> MpiSession::gather_to_coordinator(int value) const {
   std::vector<int> values(coordinator() ? std::size_t(size_) : 0);
   MPI_Gather(&value, 1, MPI_INT, values.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);

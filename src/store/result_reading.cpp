@@ -1,5 +1,6 @@
 #include <unistd.h>
 
+#include <algorithm>
 #include <numeric>
 
 #include "hdf5_handle.hpp"
@@ -116,18 +117,24 @@ std::vector<std::string> read_name_list_attribute(const std::string& path, const
 
 namespace {
 
+herr_t collect_name(hid_t, const char* name, const H5L_info_t*, void* names) {
+  static_cast<std::vector<std::string>*>(names)->emplace_back(name);
+  return 0;
+}
+
+// The group's members of one type, in name order. Listed in one pass in the storage's native order and
+// sorted here (strcmp's order, as HDF5's increasing name index): asking HDF5 for names in increasing order
+// makes it build and free a table of decoded links, where HDF5 1.10.8 frees pointers read from a damaged
+// file (the SEGV of tests/fuzz/regressions/result_file/hdf5-dense-link-table-free.h5).
 std::vector<std::string> member_names(const std::string& path, const std::string& group, H5I_type_t type) {
   Handle file = h5::open_file(path, false);
   const std::string where = group.empty() ? "/" : group;
   Handle parent(check(H5Gopen2(file, where.c_str(), H5P_DEFAULT), "open group " + where), H5Gclose);
-  H5G_info_t info{};
-  check(H5Gget_info(parent, &info), "list group " + where);
+  std::vector<std::string> links;
+  check(H5Literate(parent, H5_INDEX_NAME, H5_ITER_NATIVE, nullptr, collect_name, &links), "list group " + where);
+  std::sort(links.begin(), links.end());
   std::vector<std::string> names;
-  for (hsize_t i = 0; i < info.nlinks; ++i) {
-    const auto length = check(H5Lget_name_by_idx(parent, ".", H5_INDEX_NAME, H5_ITER_INC, i, nullptr, 0, H5P_DEFAULT),
-                              "list group " + where);
-    std::string name(std::size_t(length), '\0');
-    H5Lget_name_by_idx(parent, ".", H5_INDEX_NAME, H5_ITER_INC, i, name.data(), name.size() + 1, H5P_DEFAULT);
+  for (const auto& name : links) {
     Handle child(check(H5Oopen(parent, name.c_str(), H5P_DEFAULT), "open " + name), H5Oclose);
     if (H5Iget_type(child) == type) names.push_back(name);
   }

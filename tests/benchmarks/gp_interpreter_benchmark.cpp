@@ -2,7 +2,8 @@
 // sizes; a node is an operator, an input or a constant, as in a tree), evaluated over 12,800 rows of 10
 // uniform inputs in [-1, 1] on one core. Reports node-rows per second (tree nodes x rows / seconds) for
 // the batch interpreter (float and double) and the per-row tree walker, with arithmetic only (+ - * /)
-// and with transcendentals (+ - * / exp log sin cos sqrt).
+// and with transcendentals (+ - * / exp log sin cos sqrt), in every kernel set the machine has
+// (core/kernel_set.hpp).
 //   bench_gp_interpreter [expressions=1000] [walker_expressions=200] [repeats=3]
 // The tree walker runs on the first walker_expressions expressions (it is ~30x slower); the rates are
 // per node-row, so they compare directly. Each measurement is the best of `repeats` passes.
@@ -11,8 +12,10 @@
 #include <cstddef>
 #include <cstdio>
 #include <cstdlib>
+#include <string>
 #include <vector>
 
+#include "pbrfit/core/kernel_set.hpp"
 #include "pbrfit/core/random_stream.hpp"
 #include "pbrfit/gp/batch_interpreter.hpp"
 #include "pbrfit/gp/program_builder.hpp"
@@ -126,16 +129,34 @@ double walker_rate(const std::vector<Expression>& expressions, std::size_t count
   return node_rows(expressions, count) / seconds;
 }
 
-void report(const char* set, const std::vector<Expression>& expressions, std::size_t walker_count,
+const std::vector<pbrfit::KernelSet> kernel_sets = [] {
+  std::vector<pbrfit::KernelSet> sets;
+  for (auto set : {pbrfit::KernelSet::generic, pbrfit::KernelSet::avx2, pbrfit::KernelSet::avx512})
+    if (pbrfit::kernel_set_available(set)) sets.push_back(set);
+  return sets;
+}();
+
+// One row per type: the batch interpreter in every kernel set this machine has, then the tree walker.
+template <class T>
+void report_row(const char* operators, const char* type, const std::vector<Expression>& expressions,
+                std::size_t walker_count, const Dataset& dataset, int repeats) {
+  std::printf("| %-14s | %s |", operators, type);
+  double best = 0.0;
+  for (auto set : kernel_sets) {
+    pbrfit::use_kernel_set(set);
+    const double rate = batch_rate<T>(expressions, dataset, repeats);
+    best = std::max(best, rate);
+    std::printf(" %9.3g |", rate);
+  }
+  pbrfit::use_kernel_set(pbrfit::best_kernel_set());
+  const double walker = walker_rate<T>(expressions, walker_count, dataset, repeats);
+  std::printf(" %9.3g | %6.1fx |\n", walker, best / walker);
+}
+
+void report(const char* operators, const std::vector<Expression>& expressions, std::size_t walker_count,
             const Dataset& dataset, int repeats) {
-  const double batch_float = batch_rate<float>(expressions, dataset, repeats);
-  const double batch_double = batch_rate<double>(expressions, dataset, repeats);
-  const double walker_float = walker_rate<float>(expressions, walker_count, dataset, repeats);
-  const double walker_double = walker_rate<double>(expressions, walker_count, dataset, repeats);
-  std::printf("| %-16s | float32 | %9.3g | %9.3g | %6.1fx |\n", set, batch_float, walker_float,
-              batch_float / walker_float);
-  std::printf("| %-16s | float64 | %9.3g | %9.3g | %6.1fx |\n", set, batch_double, walker_double,
-              batch_double / walker_double);
+  report_row<float>(operators, "float32", expressions, walker_count, dataset, repeats);
+  report_row<double>(operators, "float64", expressions, walker_count, dataset, repeats);
 }
 
 }  // namespace
@@ -153,8 +174,11 @@ int main(int argc, char** argv) {
   std::printf("%zu expressions of 1..%zu nodes (mean %.1f), %zu rows, block %zu rows; walker on %zu expressions\n",
               count, max_nodes, node_rows(arithmetic_set, count) / row_count / static_cast<double>(count), row_count,
               block_rows, walker_count);
-  std::printf("| operators        | type    | batch node-rows/s | tree walker | speedup |\n");
-  std::printf("|---|---|---|---|---|\n");
+  std::printf("| operators      | type    |");
+  for (auto set : kernel_sets) std::printf(" batch, %s |", std::string(pbrfit::kernel_set_name(set)).c_str());
+  std::printf(" tree walker | best batch / walker |\n|---|---|");
+  for (std::size_t i = 0; i < kernel_sets.size(); ++i) std::printf("---|");
+  std::printf("---|---|\n");
   report("arithmetic", arithmetic_set, walker_count, dataset, repeats);
   report("transcendental", transcendental_set, walker_count, dataset, repeats);
   return 0;

@@ -35,6 +35,8 @@ note "--version names the version and the commit"
 "$installed" --version >version.txt
 grep -Eq '^pbrfit [0-9]+\.[0-9]+\.[0-9]+ \(commit ([0-9a-f]{12}|unknown)\)$' version.txt ||
   { cat version.txt; fail "--version does not say 'pbrfit X.Y.Z (commit C)'"; }
+grep -Eq '^kernels: (generic|avx2|avx512) \(this machine has generic' version.txt ||
+  { cat version.txt; fail "--version does not name the kernel set in use"; }
 if git -C "$PBRFIT_SOURCE_DIR" rev-parse HEAD >/dev/null 2>&1; then
   grep -q "$(git -C "$PBRFIT_SOURCE_DIR" rev-parse --short=12 HEAD)" version.txt ||
     note "(the build was configured at another commit: $(cat version.txt))"

@@ -5,9 +5,11 @@
 //
 // Contract:
 //  - only live instructions run (introns are skipped); identity instructions cost nothing;
-//  - outputs follow semantics.hpp; arithmetic, min, max, abs, neg and saturate are bitwise equal to
-//    apply<T>(); exp, exp2, log, log2, pow, sin, cos and sqrt-based operators use vectorized
-//    implementations that may differ from the standard library's by a few ulps;
+//  - outputs follow semantics.hpp; arithmetic, min, max, abs, neg, saturate, sqrt and rsqrt are bitwise
+//    equal to apply<T>(); exp, exp2, log, log2, pow, sin, cos, tan and the inverse trigonometric operators
+//    use vectorized implementations that may differ from the standard library's by a few ulps, and between
+//    kernel sets;
+//  - the block loop runs in the process's kernel set (core/kernel_set.hpp), read at each evaluation;
 //  - errors are accumulated in double (error_measure.hpp) in a fixed order: the result depends only on the
 //    program and the dataset, bitwise;
 //  - no allocation per evaluation: all scratch space is allocated by the constructor. One interpreter

@@ -24,6 +24,8 @@ class MpiSession {
 
   // Collective. Every rank returns rank 0's value.
   int broadcast_from_coordinator(int value) const;
+  // Collective. Every rank returns the least of the ranks' values.
+  int minimum_over_ranks(int value) const;
   // Collective. Rank 0 gets every rank's value (by rank); the others get an empty vector.
   std::vector<int> gather_to_coordinator(int value) const;
 

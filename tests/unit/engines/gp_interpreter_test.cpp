@@ -1,4 +1,5 @@
 #include <catch2/catch_test_macros.hpp>
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstring>
@@ -58,7 +59,11 @@ std::size_t disagreements(const Program& program, double tolerance) {
 
 }  // namespace
 
-TEST_CASE("The batch interpreter agrees with the tree walker on random programs", "[gp]") {
+// In every kernel set: arithmetic (fma among it) bitwise as the tree walker, so no set contracts a * b + c.
+TEST_CASE("The batch interpreter agrees with the tree walker on random programs, in every kernel set", "[gp]") {
+  for (const auto set : gp_test::available_kernel_sets()) {
+  const gp_test::KernelSetScope scope(set);
+  CAPTURE(pbrfit::kernel_set_name(set));
   ProgramShape shape = gp_test::wide_shape(3);
   ProgramShape arithmetic = shape;
   arithmetic.operators = {Opcode::add, Opcode::sub, Opcode::mul, Opcode::div, Opcode::fma,
@@ -77,10 +82,14 @@ TEST_CASE("The batch interpreter agrees with the tree walker on random programs"
   // Vectorized transcendentals differ from the C library's by ulps, which deep compositions may amplify.
   CHECK(float_rows_off <= 200 * 300 / 1000);
   CHECK(double_rows_off <= 200 * 300 / 1000);
+  }
 }
 
-TEST_CASE("Every operator matches its scalar semantics over one block", "[gp]") {
+TEST_CASE("Every operator matches its scalar semantics over one block, in every kernel set", "[gp]") {
+  for (const auto set : gp_test::available_kernel_sets())
   for (std::size_t k = 0; k < opcode_count; ++k) {
+    const gp_test::KernelSetScope scope(set);
+    CAPTURE(pbrfit::kernel_set_name(set));
     const auto op = static_cast<Opcode>(k);
     ProgramBuilder builder;
     const Argument a = input_argument(0);
@@ -185,4 +194,73 @@ TEST_CASE("The cost counts live operators from the table and the piecewise ones"
   CHECK(piecewise_count(program) == 2);
   table.piecewise_penalty = 10.0;
   CHECK(program_cost(program, table) == 31.0);
+}
+
+namespace {
+
+// Distance in units in the last place between two finite values of one type (0 when both are NaN).
+template <class T>
+double ulps_apart(T x, T y) {
+  if (std::isnan(x) || std::isnan(y)) return std::isnan(x) && std::isnan(y) ? 0.0 : 1e300;
+  if (x == y) return 0.0;
+  return std::abs(double(x) - double(y)) / double(std::nextafter(std::abs(y), std::numeric_limits<T>::infinity()) - std::abs(y));
+}
+
+struct SetDifference {
+  std::size_t rows_differing = 0;
+  double max_ulps = 0.0;
+};
+
+// One operator over the mixed inputs in `set` against the generic set.
+template <class T>
+SetDifference set_difference(pbrfit::KernelSet set, Opcode op) {
+  ProgramBuilder builder;
+  const Argument all[3] = {input_argument(0), input_argument(1), input_argument(2)};
+  const Program program = builder.finish(builder.append(op, all, static_cast<std::size_t>(arity(op))));
+  const Dataset& dataset = mixed_inputs();
+  std::vector<T> generic(dataset.rows()), other(dataset.rows());
+  {
+    const gp_test::KernelSetScope scope(pbrfit::KernelSet::generic);
+    BatchInterpreter<T>(dataset).evaluate(program, generic);
+  }
+  {
+    const gp_test::KernelSetScope scope(set);
+    BatchInterpreter<T>(dataset).evaluate(program, other);
+  }
+  SetDifference d;
+  for (std::size_t r = 0; r < generic.size(); ++r) {
+    const bool same = std::memcmp(&generic[r], &other[r], sizeof(T)) == 0;
+    d.rows_differing += !same;
+    d.max_ulps = std::max(d.max_ulps, ulps_apart(other[r], generic[r]));
+  }
+  return d;
+}
+
+}  // namespace
+
+// kernel_set.hpp: sets differ in transcendental results only (sqrt and rsqrt excepted), by a few ulps; and a set other than generic
+// runs code of its own (its FMA polynomials round differently from the generic ones somewhere).
+TEST_CASE("Kernel sets differ from the generic one only in transcendentals, by a few ulps", "[gp]") {
+  for (const auto set : gp_test::available_kernel_sets()) {
+    CAPTURE(pbrfit::kernel_set_name(set));
+    std::size_t transcendental_rows_differing = 0;
+    for (std::size_t k = 0; k < opcode_count; ++k) {
+      const auto op = static_cast<Opcode>(k);
+      CAPTURE(name(op));
+      const auto f = set_difference<float>(set, op);
+      const auto d = set_difference<double>(set, op);
+      if (op <= Opcode::neg || op == Opcode::saturate || op == Opcode::sqrt || op == Opcode::rsqrt) {
+        CHECK(f.rows_differing == 0);
+        CHECK(d.rows_differing == 0);
+      } else {
+        // pow is exp(b log2|a| ln2): the two functions' differences add up.
+        const double bound = op == Opcode::pow ? 8.0 : 4.0;
+        CHECK(f.max_ulps <= bound);
+        CHECK(d.max_ulps <= bound);
+        transcendental_rows_differing += f.rows_differing + d.rows_differing;
+      }
+    }
+    if (set == pbrfit::KernelSet::generic) CHECK(transcendental_rows_differing == 0);
+    else CHECK(transcendental_rows_differing > 0);
+  }
 }

@@ -4,13 +4,35 @@
 #include <cstdint>
 #include <functional>
 #include <span>
+#include <vector>
 
+#include "pbrfit/core/kernel_set.hpp"
 #include "pbrfit/core/random_stream.hpp"
 #include "pbrfit/gp/dataset.hpp"
 #include "pbrfit/gp/program_shape.hpp"
 #include "pbrfit/gp/variation.hpp"
 
 namespace gp_test {
+
+// The kernel sets this machine and build can run (core/kernel_set.hpp), generic first.
+inline std::vector<pbrfit::KernelSet> available_kernel_sets() {
+  std::vector<pbrfit::KernelSet> sets;
+  for (auto set : {pbrfit::KernelSet::generic, pbrfit::KernelSet::avx2, pbrfit::KernelSet::avx512})
+    if (pbrfit::kernel_set_available(set)) sets.push_back(set);
+  return sets;
+}
+
+// Uses a kernel set for its lifetime, then the one before.
+class KernelSetScope {
+ public:
+  explicit KernelSetScope(pbrfit::KernelSet set) : saved_(pbrfit::active_kernel_set()) { pbrfit::use_kernel_set(set); }
+  ~KernelSetScope() { pbrfit::use_kernel_set(saved_); }
+  KernelSetScope(const KernelSetScope&) = delete;
+  KernelSetScope& operator=(const KernelSetScope&) = delete;
+
+ private:
+  pbrfit::KernelSet saved_;
+};
 
 // `rows` rows of `inputs` uniform inputs in [lower, upper], target f(row).
 inline pbrfit::gp::Dataset sampled_dataset(std::size_t rows, std::size_t inputs, double lower, double upper,
