@@ -51,20 +51,21 @@ std::optional<KernelSet> parse_kernel_set(std::string_view name) {
 
 bool kernel_set_available(KernelSet set) { return cpu_has(set); }
 
-KernelSet best_kernel_set() {
-  KernelSet best = KernelSet::generic;
+KernelSet best_kernel_set() { return kernel_sets_available().back(); }
+
+std::vector<KernelSet> kernel_sets_available() {
+  std::vector<KernelSet> sets;
   for (KernelSet set : all_sets)
-    if (kernel_set_available(set)) best = set;
-  return best;
+    if (kernel_set_available(set)) sets.push_back(set);
+  return sets;
 }
 
 std::string available_kernel_sets() {
   std::string names;
-  for (KernelSet set : all_sets)
-    if (kernel_set_available(set)) {
-      if (!names.empty()) names += ", ";
-      names += kernel_set_name(set);
-    }
+  for (KernelSet set : kernel_sets_available()) {
+    if (!names.empty()) names += ", ";
+    names += kernel_set_name(set);
+  }
   return names;
 }
 

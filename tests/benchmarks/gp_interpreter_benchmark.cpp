@@ -129,12 +129,7 @@ double walker_rate(const std::vector<Expression>& expressions, std::size_t count
   return node_rows(expressions, count) / seconds;
 }
 
-const std::vector<pbrfit::KernelSet> kernel_sets = [] {
-  std::vector<pbrfit::KernelSet> sets;
-  for (auto set : {pbrfit::KernelSet::generic, pbrfit::KernelSet::avx2, pbrfit::KernelSet::avx512})
-    if (pbrfit::kernel_set_available(set)) sets.push_back(set);
-  return sets;
-}();
+const std::vector<pbrfit::KernelSet> kernel_sets = pbrfit::kernel_sets_available();
 
 // One row per type: the batch interpreter in every kernel set this machine has, then the tree walker.
 template <class T>

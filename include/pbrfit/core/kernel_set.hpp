@@ -14,6 +14,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace pbrfit {
 
@@ -27,6 +28,8 @@ std::optional<KernelSet> parse_kernel_set(std::string_view name);
 bool kernel_set_available(KernelSet set);
 // The best available set.
 KernelSet best_kernel_set();
+// Every available set, generic first, best last.
+std::vector<KernelSet> kernel_sets_available();
 // The names of every available set, best last ("generic, avx2, avx512").
 std::string available_kernel_sets();
 

@@ -61,7 +61,7 @@ std::size_t disagreements(const Program& program, double tolerance) {
 
 // In every kernel set: arithmetic (fma among it) bitwise as the tree walker, so no set contracts a * b + c.
 TEST_CASE("The batch interpreter agrees with the tree walker on random programs, in every kernel set", "[gp]") {
-  for (const auto set : gp_test::available_kernel_sets()) {
+  for (const auto set : pbrfit::kernel_sets_available()) {
   const gp_test::KernelSetScope scope(set);
   CAPTURE(pbrfit::kernel_set_name(set));
   ProgramShape shape = gp_test::wide_shape(3);
@@ -86,7 +86,7 @@ TEST_CASE("The batch interpreter agrees with the tree walker on random programs,
 }
 
 TEST_CASE("Every operator matches its scalar semantics over one block, in every kernel set", "[gp]") {
-  for (const auto set : gp_test::available_kernel_sets())
+  for (const auto set : pbrfit::kernel_sets_available())
   for (std::size_t k = 0; k < opcode_count; ++k) {
     const gp_test::KernelSetScope scope(set);
     CAPTURE(pbrfit::kernel_set_name(set));
@@ -241,7 +241,7 @@ SetDifference set_difference(pbrfit::KernelSet set, Opcode op) {
 // kernel_set.hpp: sets differ in transcendental results only (sqrt and rsqrt excepted), by a few ulps; and a set other than generic
 // runs code of its own (its FMA polynomials round differently from the generic ones somewhere).
 TEST_CASE("Kernel sets differ from the generic one only in transcendentals, by a few ulps", "[gp]") {
-  for (const auto set : gp_test::available_kernel_sets()) {
+  for (const auto set : pbrfit::kernel_sets_available()) {
     CAPTURE(pbrfit::kernel_set_name(set));
     std::size_t transcendental_rows_differing = 0;
     for (std::size_t k = 0; k < opcode_count; ++k) {

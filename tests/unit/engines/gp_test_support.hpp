@@ -4,7 +4,6 @@
 #include <cstdint>
 #include <functional>
 #include <span>
-#include <vector>
 
 #include "pbrfit/core/kernel_set.hpp"
 #include "pbrfit/core/random_stream.hpp"
@@ -13,14 +12,6 @@
 #include "pbrfit/gp/variation.hpp"
 
 namespace gp_test {
-
-// The kernel sets this machine and build can run (core/kernel_set.hpp), generic first.
-inline std::vector<pbrfit::KernelSet> available_kernel_sets() {
-  std::vector<pbrfit::KernelSet> sets;
-  for (auto set : {pbrfit::KernelSet::generic, pbrfit::KernelSet::avx2, pbrfit::KernelSet::avx512})
-    if (pbrfit::kernel_set_available(set)) sets.push_back(set);
-  return sets;
-}
 
 // Uses a kernel set for its lifetime, then the one before.
 class KernelSetScope {
