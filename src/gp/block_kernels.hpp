@@ -1,6 +1,7 @@
 // One operator over n <= block_rows values: out[i] = apply(op, a[i], b[i], c[i]) (semantics.hpp).
 // Arithmetic, comparisons, sqrt and rsqrt are plain loops the compiler vectorizes (bitwise the same in
-// every kernel set); other transcendentals use Eigen's vectorized functions. `out` never aliases an operand; operands may alias each other.
+// every kernel set); other transcendentals use Eigen's vectorized functions, lane by lane the same
+// wherever a row sits. `out` never aliases an operand; operands may alias each other.
 //
 // Included once by each kernel set's file (block_kernels_isa_<set>.cpp, compiled for that instruction
 // set), inside a namespace named by PBRFIT_KERNEL_ISA, so that the sets' copies never meet at link time;
@@ -34,20 +35,20 @@ inline void binary_loop(const T* a, const T* b, T* out, std::size_t n, F f) {
   for (std::size_t i = 0; i < n; ++i) out[i] = f(a[i], b[i]);
 }
 
+// Transcendentals run over chunks of a fixed size, copied into aligned local arrays padded past the
+// block's end: every value takes Eigen's packet code, never its scalar head or tail, whose results differ
+// by ulps. A row's value then depends on its inputs only, not on its place in the block or its buffer's
+// alignment, which threads, ranks and resumed runs change (test "A row's value depends on its inputs only").
+inline constexpr std::size_t chunk_bytes = 128;  // two AVX-512 vectors, eight SSE ones
+
 template <class T>
-void transcendental_block(Opcode op, const T* a, const T* b, T* out, std::size_t n) {
-  const ConstBlockMap<T> x(a, static_cast<Eigen::Index>(n));
-  BlockMap<T> y(out, static_cast<Eigen::Index>(n));
+void transcendental_chunk(Opcode op, const T* a, const T* b, T* out) {
+  constexpr int size = chunk_bytes / sizeof(T);
+  using Chunk = Eigen::Array<T, size, 1>;
+  const Eigen::Map<const Chunk, Eigen::Aligned64> x(a);
+  Eigen::Map<Chunk, Eigen::Aligned64> y(out);
   constexpr T ln2 = std::numbers::ln2_v<T>;
   switch (op) {
-    // sqrt and rsqrt as plain loops, correctly rounded in every set (Eigen's AVX-512 sqrt is a Newton
-    // approximation under its default EIGEN_FAST_MATH); -fno-math-errno lets them vectorize.
-    case Opcode::sqrt:
-      unary_loop(a, out, n, [](T v) { return std::sqrt(std::abs(v)); });
-      break;
-    case Opcode::rsqrt:
-      unary_loop(a, out, n, [](T v) { return T(1) / std::sqrt(std::abs(v)); });
-      break;
     case Opcode::exp:
       y = x.exp();
       break;
@@ -61,7 +62,7 @@ void transcendental_block(Opcode op, const T* a, const T* b, T* out, std::size_t
       y = x.abs().log2();
       break;
     case Opcode::pow:
-      y = (ConstBlockMap<T>(b, static_cast<Eigen::Index>(n)) * x.abs().log2() * ln2).exp();
+      y = (Eigen::Map<const Chunk, Eigen::Aligned64>(b) * x.abs().log2() * ln2).exp();
       break;
     case Opcode::sin:
       y = x.sin();
@@ -83,6 +84,38 @@ void transcendental_block(Opcode op, const T* a, const T* b, T* out, std::size_t
       break;
     default:
       break;
+  }
+}
+
+template <class T>
+void transcendental_block(Opcode op, const T* a, const T* b, T* out, std::size_t n) {
+  switch (op) {
+    // sqrt and rsqrt as plain loops, correctly rounded in every set (Eigen's AVX-512 sqrt is a Newton
+    // approximation under its default EIGEN_FAST_MATH); -fno-math-errno lets them vectorize.
+    case Opcode::sqrt:
+      unary_loop(a, out, n, [](T v) { return std::sqrt(std::abs(v)); });
+      return;
+    case Opcode::rsqrt:
+      unary_loop(a, out, n, [](T v) { return T(1) / std::sqrt(std::abs(v)); });
+      return;
+    default:
+      break;
+  }
+  constexpr std::size_t size = chunk_bytes / sizeof(T);
+  alignas(64) T x[size];
+  alignas(64) T y[size];
+  alignas(64) T z[size];
+  const bool binary = arity(op) == 2;
+  for (std::size_t first = 0; first < n; first += size) {
+    const std::size_t m = std::min(size, n - first);
+    std::copy_n(a + first, m, x);
+    std::fill(x + m, x + size, T(1));
+    if (binary) {
+      std::copy_n(b + first, m, y);
+      std::fill(y + m, y + size, T(1));
+    }
+    transcendental_chunk<T>(op, x, y, z);
+    std::copy_n(z, m, out + first);
   }
 }
 
@@ -143,7 +176,8 @@ void run_schedule(const BlockSchedule<T>& schedule, std::size_t rows, std::size_
 
 // The set's entry points (block_kernel_sets.hpp), defined once per set: flatten inlines every call into
 // them, Eigen's included, so that the including file emits no inline function the linker could pick for
-// another file compiled for another set (the test "layers: kernel set objects share no inline code").
+// another file compiled for another set (the test "layers: kernel set objects share no inline code"; for
+// clang, whose flatten goes one level deep, cmake/layers.cmake raises the inliner's threshold too).
 [[gnu::flatten]] void run_schedule_f32(const BlockSchedule<float>& schedule, std::size_t rows, std::size_t block_rows,
                                        BlockSink<float> sink) {
   run_schedule<float>(schedule, rows, block_rows, sink);

@@ -264,3 +264,49 @@ TEST_CASE("Kernel sets differ from the generic one only in transcendentals, by a
     else CHECK(transcendental_rows_differing > 0);
   }
 }
+
+namespace {
+
+// `dataset` with `shift` rows of zeros before its own.
+Dataset shifted(const Dataset& dataset, Eigen::Index shift) {
+  Dataset out;
+  out.inputs = Eigen::MatrixXd::Zero(dataset.inputs.rows() + shift, dataset.inputs.cols());
+  out.inputs.bottomRows(dataset.inputs.rows()) = dataset.inputs;
+  out.target = Eigen::VectorXd::Zero(dataset.target.size() + shift);
+  out.target.tail(dataset.target.size()) = dataset.target;
+  return out;
+}
+
+// Rows of `op` over the mixed inputs that differ bitwise when the same inputs sit `shift` rows later.
+template <class T>
+std::size_t rows_moved_by_shift(Opcode op, Eigen::Index shift) {
+  ProgramBuilder builder;
+  const Argument all[3] = {input_argument(0), input_argument(1), input_argument(2)};
+  const Program program = builder.finish(builder.append(op, all, static_cast<std::size_t>(arity(op))));
+  const Dataset& dataset = mixed_inputs();
+  const Dataset later = shifted(dataset, shift);
+  std::vector<T> here(dataset.rows()), there(later.rows());
+  BatchInterpreter<T>(dataset).evaluate(program, here);
+  BatchInterpreter<T>(later).evaluate(program, there);
+  std::size_t count = 0;
+  for (std::size_t r = 0; r < here.size(); ++r)
+    count += std::memcmp(&here[r], &there[r + static_cast<std::size_t>(shift)], sizeof(T)) != 0;
+  return count;
+}
+
+}  // namespace
+
+// Threads and ranks split rows differently and buffers land at different addresses: a row's value must
+// not depend on where in a block, or at what alignment, its inputs sit (vector and scalar code paths of a
+// transcendental round differently).
+TEST_CASE("A row's value depends on its inputs only, not on its place in the block, in every kernel set", "[gp]") {
+  for (const auto set : pbrfit::kernel_sets_available())
+    for (std::size_t k = 0; k < opcode_count; ++k)
+      for (const Eigen::Index shift : {1, 3, 7, 13}) {
+        const gp_test::KernelSetScope scope(set);
+        const auto op = static_cast<Opcode>(k);
+        CAPTURE(pbrfit::kernel_set_name(set), name(op), shift);
+        CHECK(rows_moved_by_shift<float>(op, shift) == 0);
+        CHECK(rows_moved_by_shift<double>(op, shift) == 0);
+      }
+}
