@@ -3,6 +3,7 @@
 #include <cerrno>
 #include <cstring>
 
+#include "global_heap_check.hpp"
 #include "pbrfit/core/error.hpp"
 
 namespace pbrfit::store::h5 {
@@ -74,6 +75,7 @@ Handle file_access() {
 
 Handle open_file(const std::string& path, bool writable) {
   silence_error_stack();
+  if (!writable) check_global_heaps(path);  // a damaged file must not hang a reader
   Handle fapl = file_access();
   hid_t id = H5Fopen(path.c_str(), writable ? H5F_ACC_RDWR : H5F_ACC_RDONLY, fapl);
   check(id, "open " + path);

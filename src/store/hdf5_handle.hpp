@@ -38,6 +38,8 @@ void check(herr_t status, const std::string& what);
 
 // File access without HDF5's file locks: readers come and go while the writer appends.
 Handle file_access();
+// Opens an HDF5 file; for reading, only after check_global_heaps (global_heap_check.hpp) finds no
+// collection HDF5 would loop on.
 Handle open_file(const std::string& path, bool writable);
 
 // Variable-length UTF-8 strings, in files and in memory (as char*).

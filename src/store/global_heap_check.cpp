@@ -1,0 +1,85 @@
+#include "global_heap_check.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <optional>
+#include <stdexcept>
+#include <vector>
+
+#include "pbrfit/core/error.hpp"
+#include "posix_file.hpp"
+
+namespace pbrfit::store {
+
+namespace {
+
+// The collection layout (HDF5 file format, "Global Heap"): signature "GCOL", version 1, 3 reserved bytes,
+// the collection's size in bytes (8, the default size of lengths); then objects of a 16-byte header (index
+// 2, reference count 2, reserved 4, size 8) and their data padded to 8 bytes. Index 0 is the free space,
+// whose size covers its header and the rest of the collection.
+constexpr std::array<char, 5> signature = {'G', 'C', 'O', 'L', 1};
+constexpr std::uint64_t header_bytes = 16;
+constexpr std::uint64_t object_header_bytes = 16;
+
+std::uint64_t little_endian(const std::byte* p, int bytes) {
+  std::uint64_t value = 0;
+  for (int i = bytes - 1; i >= 0; --i) value = (value << 8) | std::to_integer<std::uint64_t>(p[i]);
+  return value;
+}
+
+// True when HDF5's walk over the collection at `offset` would end (or HDF5 refuses the collection first).
+bool walk_ends(const PosixFile& file, std::uint64_t offset) {
+  std::array<std::byte, header_bytes> header{};
+  if (!file.read_at(offset, header)) return true;
+  const std::uint64_t size = little_endian(header.data() + 8, 8);
+  // HDF5 reads no collection that is smaller than its header or reaches past the end of the file.
+  if (size < header_bytes || size > file.size() - offset) return true;
+  std::vector<std::byte> collection(size);
+  if (!file.read_at(offset, collection)) return true;
+  std::uint64_t p = header_bytes;
+  while (p < size) {
+    if (p + object_header_bytes > size) return true;  // a tail too short for a header is free space
+    const std::uint64_t index = little_endian(collection.data() + p, 2);
+    const std::uint64_t object_size = little_endian(collection.data() + p + 8, 8);
+    const std::uint64_t step = index > 0 ? object_header_bytes + ((object_size + 7) & ~std::uint64_t(7)) : object_size;
+    // A step of 0, or one that wraps an address around, leaves the walk where it is or sends it back.
+    if (step == 0 || step > std::numeric_limits<std::uint64_t>::max() / 2) return false;
+    p += step;
+  }
+  return true;
+}
+
+}  // namespace
+
+void check_global_heaps(const std::string& path) {
+  std::optional<PosixFile> opened;
+  try {
+    opened.emplace(PosixFile::open_for_reading(path));
+  } catch (const std::runtime_error&) {
+    return;  // missing, not a regular file, unreadable: HDF5's open says so in the caller's words
+  }
+  const PosixFile& file = *opened;
+  const std::uint64_t length = file.size();
+  constexpr std::uint64_t chunk = std::uint64_t(1) << 20;
+  constexpr std::uint64_t overlap = signature.size() - 1;  // so that a signature across two chunks is seen
+  std::vector<std::byte> buffer;
+  for (std::uint64_t start = 0; start < length; start += chunk) {
+    buffer.resize(std::min(chunk + overlap, length - start));
+    if (!file.read_at(start, buffer)) return;
+    const char* data = reinterpret_cast<const char*>(buffer.data());
+    const char* const end = data + buffer.size();
+    for (const char* hit = data;
+         (hit = std::search(hit, end, signature.begin(), signature.end())) != end; ++hit) {
+      if (std::uint64_t(hit - data) >= chunk) break;  // the next chunk's
+      const std::uint64_t offset = start + std::uint64_t(hit - data);
+      if (!walk_ends(file, offset))
+        throw RunError("HDF5: damaged global heap collection at byte " + std::to_string(offset) +
+                       " (an object size that reading would loop on forever)");
+    }
+  }
+}
+
+}  // namespace pbrfit::store
