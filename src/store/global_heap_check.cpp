@@ -30,8 +30,9 @@ std::uint64_t little_endian(const std::byte* p, int bytes) {
   return value;
 }
 
-// True when HDF5's walk over the collection at `offset` would end (or HDF5 refuses the collection first).
-bool walk_ends(const PosixFile& file, std::uint64_t offset) {
+// True when HDF5 can walk the collection at `offset` and every object lies inside it (or when HDF5 refuses
+// the collection before walking it).
+bool collection_intact(const PosixFile& file, std::uint64_t offset) {
   std::array<std::byte, header_bytes> header{};
   if (!file.read_at(offset, header)) return true;
   const std::uint64_t size = little_endian(header.data() + 8, 8);
@@ -44,10 +45,16 @@ bool walk_ends(const PosixFile& file, std::uint64_t offset) {
     if (p + object_header_bytes > size) return true;  // a tail too short for a header is free space
     const std::uint64_t index = little_endian(collection.data() + p, 2);
     const std::uint64_t object_size = little_endian(collection.data() + p + 8, 8);
-    const std::uint64_t step = index > 0 ? object_header_bytes + ((object_size + 7) & ~std::uint64_t(7)) : object_size;
-    // A step of 0, or one that wraps an address around, leaves the walk where it is or sends it back.
-    if (step == 0 || step > std::numeric_limits<std::uint64_t>::max() / 2) return false;
-    p += step;
+    const std::uint64_t room = size - p;
+    if (index == 0) {
+      // The free space covers its own header and the rest: of size 0 HDF5's walk never advances.
+      if (object_size < object_header_bytes || object_size > room) return false;
+      p += object_size;
+    } else {
+      // An object past the collection's end would make HDF5 copy (H5HG_read) or step beyond it.
+      if (object_size > room - object_header_bytes) return false;
+      p += object_header_bytes + ((object_size + 7) & ~std::uint64_t(7));
+    }
   }
   return true;
 }
@@ -75,9 +82,9 @@ void check_global_heaps(const std::string& path) {
          (hit = std::search(hit, end, signature.begin(), signature.end())) != end; ++hit) {
       if (std::uint64_t(hit - data) >= chunk) break;  // the next chunk's
       const std::uint64_t offset = start + std::uint64_t(hit - data);
-      if (!walk_ends(file, offset))
+      if (!collection_intact(file, offset))
         throw RunError("HDF5: damaged global heap collection at byte " + std::to_string(offset) +
-                       " (an object size that reading would loop on forever)");
+                       " (an object's size runs past the collection or never advances)");
     }
   }
 }

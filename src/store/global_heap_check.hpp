@@ -1,14 +1,18 @@
 #pragma once
-// A guard against one way a damaged HDF5 file hangs the library. HDF5 1.10.8 (Debian 12) walks a global
-// heap collection (where variable-length strings live) object by object, advancing by each object's
-// declared size; a free-space object of size 0, or a size that wraps the address around, never advances
-// and the walk loops forever (found by the result_file fuzzer). Before a reader opens a file, this walks
-// every collection the same way and refuses the file if a walk would not end. Private to the store.
+// A guard against damaged HDF5 global heap collections (where variable-length strings live), which
+// HDF5 1.10.8 (Debian 12) trusts: it walks a collection object by object, advancing by each object's
+// declared size, so a free-space object of size 0 makes the walk loop forever; and it copies an object by
+// its declared size, so one larger than its collection reads (and writes) past the buffers (both found by
+// the result_file fuzzer). Before a reader opens a file, this walks every collection the same way and
+// refuses the file if the walk would not end or an object would leave its collection. Not guarded: a
+// string whose length in its attribute or dataset differs from its heap object's size (HDF5 copies the
+// object's size into a buffer of the string's). Private to the store.
 #include <string>
 
 namespace pbrfit::store {
 
-// Throws RunError naming the byte offset of a global heap collection whose object list would not end;
+// Throws RunError naming the byte offset of a global heap collection whose walk would not end or whose
+// object leaves it;
 // returns quietly for an intact file (and for any file it cannot read: HDF5's own open reports that).
 void check_global_heaps(const std::string& path);
 
