@@ -62,3 +62,20 @@ TEST_CASE("a CSV file of too many columns or rows is refused at the line that ex
                              std::to_string(max_csv_rows) + " data rows");
 }
 
+
+// What spreadsheet programs and pandas write (issue 24): a byte-order mark, quoted header names and fields
+// (commas and doubled quotes inside), a leading '+'.
+TEST_CASE("CSV files as spreadsheets and pandas write them are read") {
+  const auto table = parse_csv("\xEF\xBB\xBF\"x\",\"a, \"\"b\"\"\"\r\n+0.4,\"-1e1\"\r\n\"+2\" , 3\r\n", "d.csv");
+  CHECK(table.names() == std::vector<std::string>{"x", "a, \"b\""});
+  CHECK(table.column("x", {}) == std::vector<double>{0.4, 2.0});
+  CHECK(table.column("a, \"b\"", {}) == std::vector<double>{-10.0, 3.0});
+  CHECK(refusal("x,y\n\"1,2\n") == "d.csv:2:1: error: a quoted field without its closing quote");
+  CHECK(refusal("x,y\n\"1\"2,3\n") == "d.csv:2:4: error: text after a quoted field's closing quote");
+  CHECK(refusal("x,y\n1,\"1,5\"\n") == "d.csv:2:3: error: expected a finite number, got '1,5'");
+  CHECK(refusal("x,y\n1,+-2\n") == "d.csv:2:3: error: expected a finite number, got '+-2'");
+  CHECK(refusal("x,y\n1,++2\n") == "d.csv:2:3: error: expected a finite number, got '++2'");
+  CHECK(refusal("x,y\n1,+\n") == "d.csv:2:3: error: expected a finite number, got '+'");
+  CHECK(refusal("\"x\",\"x\"\n1,2\n") == "d.csv:1:5: error: column names must be non-empty and unique");
+  CHECK(refusal("x,y\n1,\"2\",3\n") == "d.csv:2:1: error: a row of 3 fields; the header has 2");
+}

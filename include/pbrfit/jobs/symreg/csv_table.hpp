@@ -1,8 +1,11 @@
 #pragma once
 // A numeric CSV table: a header line of column names, then rows of numbers separated by commas (spaces
-// around fields ignored, '#' lines and empty lines skipped, CRLF accepted).
+// around fields ignored, '#' lines and empty lines skipped, CRLF accepted), as spreadsheets and pandas
+// write them too: a UTF-8 byte-order mark, fields in double quotes (RFC 4180: commas inside, "" for a
+// quote; a field does not span lines) and numbers with a leading '+'.
 //
-// Contract: parse_csv throws InputError at FILE:LINE:COL for a field that is not a finite number, a row
+// Contract: parse_csv throws InputError at FILE:LINE:COL for a field that is not a finite number, a quoted
+// field without its closing quote or with text after it, a row
 // with another number of fields than the header, a duplicate or empty column name, no data rows, or more
 // than max_csv_columns columns or max_csv_rows rows (refused at the line that exceeds them, before it is
 // stored: a hostile file cannot make the table outgrow these bounds).
