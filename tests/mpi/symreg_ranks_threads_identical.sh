@@ -79,6 +79,16 @@ symreg:
 YAML
 GROUPS_TO_COMPARE=(/y)
 compare_layouts csv.yaml
+note "a quarter of the CSV rows held out: test errors in the front, the same on any ranks and threads"
+sed 's/targets: \[y\]}/targets: [y], test_fraction: 0.25}/' csv.yaml > held.yaml
+compare_layouts held.yaml
+"$H5PY_PYTHON" - <<'PY' || fail "the held-out rows are not measured"
+import h5py, numpy as np
+with h5py.File("held-ref.h5", "r") as f:
+    y = f["y"]
+    assert int(y.attrs["test_rows"]) == 8 and int(y.attrs["rows"]) == 23, dict(y.attrs)
+    assert np.all(np.isfinite(y["front"]["test_rmse"]))
+PY
 printf 'x,y\n1,2\n3,four\n' > bad.csv
 sed 's/data.csv/bad.csv/' csv.yaml > bad.yaml
 run_ranks 1 run bad.yaml --output bad.h5 -q 2> err.txt

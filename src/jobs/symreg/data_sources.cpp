@@ -1,9 +1,11 @@
 // Where symbolic regression reads its data (symreg_data.hpp): a built-in generator, a CSV file, or tables of
 // a pbrfit result (their axes are the inputs).
+#include <algorithm>
 #include <cmath>
 #include <set>
 
 #include "pbrfit/core/error.hpp"
+#include "pbrfit/core/random_stream.hpp"
 #include "pbrfit/gp/benchmark_problems.hpp"
 #include "pbrfit/jobs/read_named_file.hpp"
 #include "pbrfit/jobs/symreg/csv_table.hpp"
@@ -85,6 +87,39 @@ void add_cross_inputs(const DatasetSection& s, SymregData& data) {
   }
 }
 
+// Rows of `all` in `order` from `first` on.
+gp::Dataset rows_of(const gp::Dataset& all, const std::vector<Eigen::Index>& order, std::size_t first, std::size_t count) {
+  gp::Dataset part;
+  part.inputs.resize(static_cast<Eigen::Index>(count), all.inputs.cols());
+  part.target.resize(static_cast<Eigen::Index>(count));
+  for (std::size_t i = 0; i < count; ++i) {
+    const Eigen::Index row = order[first + i];
+    part.inputs.row(static_cast<Eigen::Index>(i)) = all.inputs.row(row);
+    part.target[static_cast<Eigen::Index>(i)] = all.target[row];
+  }
+  return part;
+}
+
+// test_fraction: round(fraction x rows) rows of each output held out, chosen by a shuffle seeded by
+// sample_seed (outputs of as many rows hold out the same rows); both parts keep the file's row order.
+void hold_out_rows(const DatasetSection& s, SymregData& data) {
+  for (auto& out : data.outputs) {
+    const auto rows = static_cast<std::size_t>(out.train.rows());
+    const auto held = static_cast<std::size_t>(std::llround(s.test_fraction.value * double(rows)));
+    if (held == 0) continue;
+    if (rows - held < 2)
+      s.test_fraction.reject("leaves output '" + out.name + "' fewer than 2 training rows (of " + std::to_string(rows) + ")");
+    std::vector<Eigen::Index> order(rows);
+    for (std::size_t i = 0; i < rows; ++i) order[i] = static_cast<Eigen::Index>(i);
+    RandomStream random(s.sample_seed, 0, 2);
+    for (std::size_t i = rows - 1; i > 0; --i) std::swap(order[i], order[random.below(i + 1)]);
+    std::sort(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(held));
+    std::sort(order.begin() + static_cast<std::ptrdiff_t>(held), order.end());
+    out.test = rows_of(out.train, order, 0, held);
+    out.train = rows_of(out.train, order, held, rows - held);
+  }
+}
+
 spec::Keys<DatasetSection> make_dataset_keys() {
   using S = DatasetSection;
   using std::int64_t;
@@ -97,7 +132,12 @@ spec::Keys<DatasetSection> make_dataset_keys() {
   k.integer("test_points", "generator: fresh points the front is also judged on", &S::test_points)
       .range(0, 1'000'000)
       .defaults_to(int64_t{10'000});
-  k.integer("sample_seed", "generator: the seed of the points (the job's seed drives the search)", &S::sample_seed)
+  k.number("test_fraction", "csv, result: the share of rows held out (chosen by sample_seed), on which every front member is also judged",
+           &S::test_fraction)
+      .range(0.0, 0.9)
+      .defaults_to(0.0);
+  k.integer("sample_seed", "generator: the seed of the points; test_fraction: of the rows held out (the job's seed drives the search)",
+            &S::sample_seed)
       .at_least(0)
       .defaults_to(int64_t{0});
   k.string("csv", "a CSV file with a header line of column names", &S::csv);
@@ -127,6 +167,9 @@ std::shared_ptr<const SymregData> load_symreg_data(const DatasetSection& s, cons
   for (const auto& o : data.outputs)
     if (!names.insert(o.name).second) (s.csv.written ? s.targets : s.tables).reject("names '" + o.name + "' twice");
   if (s.cross_inputs.value) add_cross_inputs(s, data);
+  if (s.test_fraction.written && s.generator.written)
+    s.test_fraction.reject("is for csv and result data; a generator draws fresh test points (test_points)");
+  hold_out_rows(s, data);
   for (const auto& o : data.outputs) {
     if (o.train.rows() < 2) (s.csv.written ? s.csv : s.result).reject("gives output '" + o.name + "' fewer than 2 rows");
     gp::validate(o.train);

@@ -64,7 +64,7 @@ store::Group SymregWorkload::output_group(std::size_t o) const {
                {"piecewise", ValueType::u32, "live min, max, abs and saturate"},
                {"rmse", ValueType::f64, "RMSE on the training rows, in double"},
                {"max_abs_error", ValueType::f64, "largest absolute error on the training rows"},
-               {"test_rmse", ValueType::f64, "RMSE on fresh rows (NaN without them)"},
+               {"test_rmse", ValueType::f64, "RMSE on the test rows: fresh points or held-out rows (NaN without them)"},
                {"generation", ValueType::u64, "the generation it was first evaluated in"},
                {"knee", ValueType::u8, "1 for the knee of the front (the default export)"}},
               {{"role", "front"}}),

@@ -1,6 +1,7 @@
 #pragma once
 // The data of a symbolic-regression job, loaded once per process and shared read-only by its threads: one
-// training set per output (and, for built-in generators, a fresh test set), with the names of the inputs.
+// training set per output and a test set (a generator's fresh points, or rows of a file held out by
+// test_fraction), with the names of the inputs.
 // With cross_inputs (Pesce & Iwanicki 2015, section 5.3) every other output is an extra input of each.
 //
 // Invariants: at least one output; every dataset passed gp::validate; inputs.size() equals the datasets'
@@ -18,7 +19,7 @@ struct SymregOutput {
   std::string name;
   std::vector<std::string> inputs;
   gp::Dataset train;
-  gp::Dataset test;  // empty (0 rows) unless the source can draw fresh points
+  gp::Dataset test;  // fresh points of a generator, or the rows test_fraction holds out; may be empty
 };
 
 struct SymregData {
@@ -30,6 +31,7 @@ struct SymregData {
 struct DatasetSection {
   spec::Located<std::string> generator, csv, result;
   std::size_t points = 20, test_points = 10'000;
+  spec::Located<double> test_fraction;
   std::uint64_t sample_seed = 0;
   spec::Located<std::vector<std::string>> inputs, targets, tables;
   spec::Located<bool> cross_inputs;
