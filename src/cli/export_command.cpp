@@ -107,13 +107,14 @@ ExitCode export_table(const ExportOptions& o, const store::ResultSummary& summar
   return exit_success;
 }
 
-// Digits only: "-1", "+2", "1.0" and numbers beyond size_t are refused, naming the option.
+// Digits only (or "test", handled by request_of): "-1", "+2", "1.0" and numbers beyond size_t are refused,
+// naming the option.
 std::optional<std::size_t> member_of(const std::string& text) {
-  if (text.empty()) return std::nullopt;
+  if (text.empty() || text == "test") return std::nullopt;
   std::size_t member = 0;
   const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), member);
   if (error != std::errc() || end != text.data() + text.size())
-    throw InputError({"--member"}, quote(text) + " is not a row of the front (0, 1, 2, ...)");
+    throw InputError({"--member"}, quote(text) + " is not a row of the front (0, 1, 2, ...) or 'test'");
   return member;
 }
 
@@ -121,6 +122,7 @@ jobs::symreg::MemberExport request_of(const ExportOptions& options) {
   jobs::symreg::MemberExport request;
   request.output = options.output;
   request.member = member_of(options.member);
+  request.by_test_error = options.member == "test";
   request.language = language_of(options.format);
   request.function_name = options.name;
   request.cpp_double = options.cpp_double;

@@ -95,7 +95,7 @@ int main_entry(int argc, char** argv) {
   export_cmd->add_option("--prefix", export_options.prefix, "cpp, glsl, hlsl, js: prefix of every generated symbol");
   export_cmd->add_option("--output", export_options.output, "front member: the output (group) whose front to read "
                          "(default: the only one)");
-  export_cmd->add_option("--member", export_options.member, "front member: row of the front, from 0 (default: the knee)");
+  export_cmd->add_option("--member", export_options.member, "front member: row of the front, from 0, or 'test': the lowest test error (default: the knee)");
   export_cmd->add_option("--name", export_options.name, "front member: the function's name (default: the output's)");
   export_cmd->add_flag("--double", export_options.cpp_double, "front member, C++ only: double instead of float");
 

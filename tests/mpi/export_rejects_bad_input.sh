@@ -48,7 +48,7 @@ expect_refusal 2 "symreg.h5: error: no output 'z' in the result; its outputs: 'y
 export_ symreg.h5 --member "$members"
 expect_refusal 2 "symreg.h5: error: member $members is out of range: the front of 'y' has $members members (0 to $((members - 1)))"
 export_ symreg.h5 --member -1
-expect_refusal 2 "--member: error: '-1' is not a row of the front (0, 1, 2, ...)"
+expect_refusal 2 "--member: error: '-1' is not a row of the front (0, 1, 2, ...) or 'test'"
 export_ symreg.h5 --name 'my model'
 expect_refusal 2 "--name: error: 'my model' is not a name every export language accepts (a letter, then letters, digits and single '_'; no keyword or built-in function)"
 export_ symreg.h5 --double --format glsl

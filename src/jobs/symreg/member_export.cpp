@@ -40,13 +40,22 @@ std::size_t knee_member(const std::string& path, const OutputFront& front) {
   return std::size_t(knee - front.members.begin());
 }
 
+std::size_t best_test_member(const std::string& path, const OutputFront& front) {
+  const auto best = lowest_test_error_member(front);
+  if (!best)
+    throw InputError({path}, "the front of " + quote(front.output) +
+                                 " has no test errors (no test rows: see dataset.test_fraction); choose with --member");
+  return *best;
+}
+
 std::size_t chosen_member(const std::string& path, const store::ResultSummary& summary, const OutputFront& front,
-                          std::optional<std::size_t> wanted) {
+                          std::optional<std::size_t> wanted, bool by_test_error) {
   const std::size_t count = front.members.size();
   if (count == 0)
     throw InputError({path}, "no front of " + quote(front.output) + " yet: the job has not finished its last stage (" +
                                  store::run_status_name(summary.state) + ", " + std::to_string(summary.items_done) + " of " +
                                  std::to_string(summary.items_total) + " work items done)");
+  if (by_test_error) return best_test_member(path, front);
   if (!wanted) return knee_member(path, front);
   if (*wanted >= count)
     throw InputError({path}, "member " + std::to_string(*wanted) + " is out of range: the front of " + quote(front.output) +
@@ -122,7 +131,7 @@ std::string export_member(const std::string& path, const store::ResultSummary& s
   // A BRDF's inputs attribute lists its parameters p0..p3 last: they become arguments of the function.
   const OutputFront front = read_output_front(path, chosen_output(path, request.output));
   const gp::ExportOptions options = export_options(request, front);
-  const std::size_t member = chosen_member(path, summary, front, request.member);
+  const std::size_t member = chosen_member(path, summary, front, request.member, request.by_test_error);
   return comment_line(summary, front, member) + gp::export_function(parsed_member(path, front, member), options);
 }
 

@@ -5,6 +5,7 @@
 #include <catch2/matchers/catch_matchers_string.hpp>
 
 #include <filesystem>
+#include <limits>
 #include <string>
 
 #include <unistd.h>
@@ -56,8 +57,8 @@ std::string result_path(const char* name) {
 
 // Runs every stage in process; the file gets the last stage's blocks (fronts, anchors, predictions) only
 // when `finished`.
-std::string symreg_result(const char* name, bool finished) {
-  const auto job = spec::parse_job_text(job_text, "tiny.yaml", jobs::kind_catalogue());
+std::string symreg_result(const char* name, bool finished, const std::string& text = job_text) {
+  const auto job = spec::parse_job_text(text, "tiny.yaml", jobs::kind_catalogue());
   const SymregWorkload w(symreg_settings(job.kind_section));
   ItemResults kept;
   std::vector<store::Block> final_blocks;
@@ -72,7 +73,7 @@ std::string symreg_result(const char* name, bool finished) {
   store::RunInfo info;
   info.job_name = "tiny-symreg";
   info.job_kind = "symreg";
-  info.job_yaml = job_text;
+  info.job_yaml = text;
   store::ResultFile file(path, w.layout(), info);
   store::Progress progress;
   progress.state = finished ? store::RunStatus::complete : store::RunStatus::running;
@@ -148,4 +149,31 @@ TEST_CASE("export refuses, on one line naming the file or option, what it cannot
   REQUIRE_THROWS_WITH(export_member(path, not_symreg, {}),
                       path + ": error: not a symbolic-regression or genBRDF result (job kind 'lut'); export reads "
                              "the fronts of symreg and brdf_search results");
+}
+
+// --member test: the validation error chooses (issue 24); without test rows it is refused, naming the file.
+TEST_CASE("the member of the lowest test error is chosen on request, and refused without test rows") {
+  // (In this tiny run the knee is also the best on the test rows; the choice itself is tested below.)
+  const auto path = symreg_result("by-test.h5", true);
+  const auto front = read_output_front(path, "y");
+  const std::size_t best = lowest_test_error_member(front).value();
+  MemberExport request;
+  request.by_test_error = true;
+  CHECK_THAT(exported(path, request), StartsWith("// tiny-symreg, output y, member " + std::to_string(best) + " of "));
+  std::string untested = job_text;
+  untested.replace(untested.find("points: 20}"), 11, "points: 20, test_points: 0}");
+  const auto no_test = symreg_result("no-test.h5", true, untested);
+  CHECK_THROWS_WITH(exported(no_test, request),
+                    no_test + ": error: the front of 'y' has no test errors (no test rows: see "
+                              "dataset.test_fraction); choose with --member");
+}
+
+TEST_CASE("the lowest test error: NaN members skipped, the cheapest of equals, none without test errors") {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  OutputFront front{"y", {"x"}, {}};
+  for (const double test : {nan, 0.5, 0.2, 0.2, 0.9}) front.members.push_back({"x", 1.0, 0.1, 0.1, test, false});
+  front.members[4].knee = true;
+  CHECK(lowest_test_error_member(front) == std::optional<std::size_t>(2));
+  for (auto& m : front.members) m.test_rmse = nan;
+  CHECK_FALSE(lowest_test_error_member(front).has_value());
 }

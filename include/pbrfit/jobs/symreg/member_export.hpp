@@ -8,7 +8,8 @@
 //
 // Refusals are InputErrors on one line: naming the result file for a result that is not a symreg result,
 // an output it does not have (or none chosen when it has several), a member out of range, a front that
-// does not exist yet (the job has not finished its last stage), a stored expression that does not parse;
+// does not exist yet (the job has not finished its last stage), a stored expression that does not parse,
+// a choice by test error in a result without test rows;
 // naming the option for a --name that is not a portable name and for --double outside C++.
 #include <cstddef>
 #include <optional>
@@ -21,7 +22,8 @@ namespace pbrfit::jobs::symreg {
 
 struct MemberExport {
   std::string output;                 // empty: the result's only output
-  std::optional<std::size_t> member;  // row of <output>/front; empty: the knee
+  std::optional<std::size_t> member;  // row of <output>/front; empty: the knee (or, by_test_error, ...)
+  bool by_test_error = false;         // the member of the lowest test RMSE (the cheapest of equals)
   gp::ExportLanguage language = gp::ExportLanguage::hlsl;
   std::string function_name;          // empty: the output's name as a portable name
   bool cpp_double = false;

@@ -13,6 +13,7 @@ struct FrontMember {
   double cost = 0.0;
   double rmse = 0.0;
   double max_abs_error = 0.0;
+  double test_rmse = 0.0;  // on the test rows; NaN without them
   bool knee = false;
 };
 
@@ -21,6 +22,9 @@ struct OutputFront {
   std::vector<std::string> inputs;
   std::vector<FrontMember> members;  // by increasing cost
 };
+
+// The member of the lowest test RMSE, the cheapest (first) of equals; none when no member has one.
+std::optional<std::size_t> lowest_test_error_member(const OutputFront& front);
 
 // The output groups: every group at the root but `subexpressions`, in name order.
 std::vector<std::string> result_outputs(const std::string& path);
