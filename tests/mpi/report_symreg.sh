@@ -62,7 +62,10 @@ PY
 grep -qF "<td>$best</td>" "$html" || fail "the anchor is not compared with $best"
 knee=$("$H5PY_PYTHON" -c 'import h5py, numpy; print(int(numpy.flatnonzero(h5py.File("result.h5", "r")["y/front"]["knee"] == 1)[0]))')
 grep -q "the knee (the default of pbrfit export) is member $knee: " "$html" || fail "the knee is not named"
-note "$IMAGES images; knee member $knee; the anchor compared with $best"
+tested=$("$H5PY_PYTHON" -c 'import h5py, numpy; print(int(numpy.nanargmin(h5py.File("result.h5", "r")["y/front"]["test_rmse"])))')
+grep -q "On the test rows the lowest RMSE is member ${tested}[^ ]* (.*); pbrfit export --member test exports it." "$html" ||
+  fail "the member of the lowest test RMSE ($tested) is not named"
+note "$IMAGES images; knee member $knee; the anchor compared with $best; member $tested best on the test rows"
 
 
 note "two tables of a pbrfit result: two inputs on a grid, two outputs"

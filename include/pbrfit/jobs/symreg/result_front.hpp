@@ -3,6 +3,8 @@
 // the output groups, and per output its inputs (group attribute `inputs`, in column order) and the rows of
 // its `front` table (empty while the job has not finished its last stage). A table or attribute the
 // layout promises that cannot be read is a RunError.
+#include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 

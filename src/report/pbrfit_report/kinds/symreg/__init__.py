@@ -54,6 +54,18 @@ def _knee_formula(report, data, shown):
                    "digits)")
 
 
+def _test_choice(data):
+    """Which member the test rows favour (pbrfit export --member test), beside the training RMSE's choice."""
+    test = data.front["test_rmse"]
+    if not np.any(np.isfinite(test)):
+        return [page.paragraph("No test rows: every error is on the rows the search fitted (hold rows out with "
+                               "dataset.test_fraction to see how members do on others).")]
+    best = int(np.nanargmin(test))
+    return [page.paragraph(f"On the test rows the lowest RMSE is member {best}'s ({number(test[best])}, against "
+                           f"{number(data.front['rmse'][best])} on the training rows); pbrfit export --member test "
+                           "exports it.")]
+
+
 def _front_parts(report, data, shown):
     path = data.path.rstrip("/")
     parts = [page.heading(3, f"{path}/front and {path}/anchors")]
@@ -64,6 +76,7 @@ def _front_parts(report, data, shown):
                                 f"pbrfit export) is {_knee_text(data, shown)}. Constants are rounded to the fewest "
                                 "digits that leave the RMSE's printed digits unchanged; 'exact' shows the text "
                                 "as found."))
+    parts += _test_choice(data)
     parts += _knee_formula(report, data, shown)
     parts += _figure(report, lambda: front_figure(data, shown), f"{path}/front",
                      f"{path}/front (front) and {path}/anchors (anchors): RMSE filled, max abs error hollow, the "
