@@ -30,33 +30,35 @@ std::uint64_t little_endian(const std::byte* p, int bytes) {
   return value;
 }
 
-// True when HDF5 can walk the collection at `offset` and every object lies inside it (or when HDF5 refuses
-// the collection before walking it).
-bool collection_intact(const PosixFile& file, std::uint64_t offset) {
+enum class Walk { intact, damaged, not_walked };
+
+// Walks the collection at `offset` as HDF5 does: intact when the walk ends and every object lies inside
+// it (`size` is then its size); not walked when HDF5 refuses it before walking (smaller than its header,
+// or past the end of the file).
+Walk walk_collection(const PosixFile& file, std::uint64_t offset, std::uint64_t& size) {
   std::array<std::byte, header_bytes> header{};
-  if (!file.read_at(offset, header)) return true;
-  const std::uint64_t size = little_endian(header.data() + 8, 8);
-  // HDF5 reads no collection that is smaller than its header or reaches past the end of the file.
-  if (size < header_bytes || size > file.size() - offset) return true;
+  if (!file.read_at(offset, header)) return Walk::not_walked;
+  size = little_endian(header.data() + 8, 8);
+  if (size < header_bytes || size > file.size() - offset) return Walk::not_walked;
   std::vector<std::byte> collection(size);
-  if (!file.read_at(offset, collection)) return true;
+  if (!file.read_at(offset, collection)) return Walk::not_walked;
   std::uint64_t p = header_bytes;
   while (p < size) {
-    if (p + object_header_bytes > size) return true;  // a tail too short for a header is free space
+    if (p + object_header_bytes > size) return Walk::intact;  // a tail too short for a header is free space
     const std::uint64_t index = little_endian(collection.data() + p, 2);
     const std::uint64_t object_size = little_endian(collection.data() + p + 8, 8);
     const std::uint64_t room = size - p;
     if (index == 0) {
       // The free space covers its own header and the rest: of size 0 HDF5's walk never advances.
-      if (object_size < object_header_bytes || object_size > room) return false;
+      if (object_size < object_header_bytes || object_size > room) return Walk::damaged;
       p += object_size;
     } else {
       // An object past the collection's end would make HDF5 copy (H5HG_read) or step beyond it.
-      if (object_size > room - object_header_bytes) return false;
+      if (object_size > room - object_header_bytes) return Walk::damaged;
       p += object_header_bytes + ((object_size + 7) & ~std::uint64_t(7));
     }
   }
-  return true;
+  return Walk::intact;
 }
 
 }  // namespace
@@ -73,6 +75,9 @@ void check_global_heaps(const std::string& path) {
   constexpr std::uint64_t chunk = std::uint64_t(1) << 20;
   constexpr std::uint64_t overlap = signature.size() - 1;  // so that a signature across two chunks is seen
   std::vector<std::byte> buffer;
+  // Collections do not overlap: a signature inside an intact one is its objects' data (a string that
+  // happens to read "GCOL"), not walked again, which keeps the whole check linear in the file's size.
+  std::uint64_t intact_until = 0;
   for (std::uint64_t start = 0; start < length; start += chunk) {
     buffer.resize(std::min(chunk + overlap, length - start));
     if (!file.read_at(start, buffer)) return;
@@ -82,7 +87,11 @@ void check_global_heaps(const std::string& path) {
          (hit = std::search(hit, end, signature.begin(), signature.end())) != end; ++hit) {
       if (std::uint64_t(hit - data) >= chunk) break;  // the next chunk's
       const std::uint64_t offset = start + std::uint64_t(hit - data);
-      if (!collection_intact(file, offset))
+      if (offset < intact_until) continue;
+      std::uint64_t size = 0;
+      const Walk walk = walk_collection(file, offset, size);
+      if (walk == Walk::intact) intact_until = offset + size;
+      if (walk == Walk::damaged)
         throw RunError("HDF5: damaged global heap collection at byte " + std::to_string(offset) +
                        " (an object's size runs past the collection or never advances)");
     }

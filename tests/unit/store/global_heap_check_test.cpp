@@ -62,3 +62,24 @@ TEST_CASE("A global heap object larger than its collection is refused", "[store]
                            "/tests/fuzz/regressions/result_file/hdf5-global-heap-object-past-its-collection.h5";
   CHECK_THROWS_WITH(check_global_heaps(past), Catch::Matchers::ContainsSubstring("at byte 2048"));
 }
+
+// An intact collection whose first object's data reads like a damaged collection: taken for data, as
+// HDF5 allocates collections side by side (walking it would refuse the file; skipping keeps the check linear).
+TEST_CASE("A collection inside an intact one is its data, not walked", "[store]") {
+  std::string bytes(8192, '\0');
+  const auto put_header = [&](std::size_t at, std::uint64_t size) {
+    bytes.replace(at, 5, std::string("GCOL\x01", 5));
+    put_u64(bytes, at + 8, size);
+  };
+  put_header(0, 8192);
+  bytes[16] = 1;             // object 1 ...
+  put_u64(bytes, 24, 32);    // ... of 32 bytes at 32
+  put_header(32, 48);        // its data: a "collection" whose first object (at 48: index 0, size 0) loops
+  put_u64(bytes, 64 + 8, 8192 - 64);  // the free space, index 0, the rest
+  const std::string path = temporary_path("global-heap-nested.h5");
+  write_bytes(path, bytes);
+  CHECK_NOTHROW(check_global_heaps(path));
+  bytes.replace(0, 4, "XXXX");  // without the outer collection the inner one is walked, and refused
+  write_bytes(path, bytes);
+  CHECK_THROWS_WITH(check_global_heaps(path), Catch::Matchers::ContainsSubstring("at byte 32"));
+}
