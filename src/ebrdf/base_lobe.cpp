@@ -4,22 +4,8 @@
 #include <cmath>
 
 #include "pbrfit/ltc/clamped_cosine.hpp"
-#include "pbrfit/brdf/ggx_lobe.hpp"
 
 namespace pbrfit::ebrdf {
-namespace {
-
-
-// A visible-normal sample of the lobe, accepted with probability rho / pdf = G2 / G1 <= 1.
-Vector3 specular_candidate(const brdf::GgxLobe& target, RandomStream& random, bool& accepted) {
-  const double u1 = random.uniform();
-  const Vector3 l = target.sample(u1, random.uniform());
-  const auto evaluation = target.evaluate(l);
-  accepted = evaluation.pdf > 0.0 && random.uniform() * evaluation.pdf < evaluation.value;
-  return l;
-}
-
-}  // namespace
 
 Frame texel_frame(const Vector3& n, const Vector3& v) {
   Vector3 tangent = v - v.dot(n) * n;
@@ -28,29 +14,23 @@ Frame texel_frame(const Vector3& n, const Vector3& v) {
   return {tangent, n.cross(tangent), n};
 }
 
-std::vector<Vector3> sample_base_lobe(const BaseLobe& lobe, const Vector3& normal, const Vector3& view,
-                                      std::size_t count, RandomStream& random) {
-  const Frame frame = texel_frame(normal, view);
-  std::vector<Vector3> samples;
-  samples.reserve(count);
-  if (lobe.component == Component::diffuse) {
-    for (std::size_t k = 0; k < count; ++k) {
-      const double u1 = random.uniform();
-      samples.push_back(frame.from_local(ltc::sample_clamped_cosine(u1, random.uniform())));
-    }
-    return samples;
-  }
-  const double cos_q = std::clamp(view.dot(normal), min_view_cosine, 1.0);
-  const brdf::GgxLobe target(lobe.alpha, cos_q);
-  for (std::size_t attempt = 0; attempt < 64 * count && samples.size() < count; ++attempt) {
-    bool accepted = false;
-    const Vector3 l = specular_candidate(target, random, accepted);
-    if (accepted) samples.push_back(frame.from_local(l).normalized());
-  }
-  const Vector3& v = target.view();
-  if (samples.empty()) samples.push_back(frame.from_local(Vector3(-v.x(), -v.y(), v.z())));
-  for (std::size_t k = 0; samples.size() < count; ++k) samples.push_back(samples[k]);
-  return samples;
+BaseLobeLtc::BaseLobeLtc(const BaseLobe& lobe) : lobe_(lobe) {
+  if (lobe.component == Component::specular) curve_.emplace(lobe.alpha);
+}
+
+LtcLookup BaseLobeLtc::at(const Vector3& n, const Vector3& v) const {
+  if (!curve_) return {Matrix3::Identity(), 1.0};
+  return curve_->at(std::max(v.dot(n), min_view_cosine));
+}
+
+Vector3 sample_base_lobe(const LtcLookup& ltc, const Frame& frame, const std::array<double, 2>& u) {
+  return frame.from_local((ltc.matrix * ltc::sample_clamped_cosine(u[0], u[1])).normalized()).normalized();
+}
+
+std::array<double, 2> stratified_point(std::size_t k, std::size_t n, const std::array<double, 2>& shift) {
+  constexpr double inverse_golden_ratio = 0.6180339887498949;
+  const auto wrap = [](double x) { return x - std::floor(x); };
+  return {wrap((double(k) + 0.5) / double(n) + shift[0]), wrap(double(k) * inverse_golden_ratio + shift[1])};
 }
 
 }  // namespace pbrfit::ebrdf

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <numeric>
 
+#include "pbrfit/core/random_stream.hpp"
+
 namespace pbrfit::ebrdf {
 namespace {
 
@@ -18,8 +20,8 @@ std::size_t mip_levels(std::size_t size) {
   return levels;
 }
 
-FootprintSampler::FootprintSampler(const NormalMap& map, const EbrdfSampling& sampling, const AlbedoCurve& albedo)
-    : map_(map), sampling_(sampling), albedo_(albedo) {}
+FootprintSampler::FootprintSampler(const NormalMap& map, const EbrdfSampling& sampling, const BaseLobeLtc& base)
+    : map_(map), sampling_(sampling), base_(base) {}
 
 std::vector<std::size_t> FootprintSampler::contributing_texels(const MipTexel& texel) const {
   const std::size_t side = std::min(map_.size(), std::size_t(1) << texel.level);
@@ -39,21 +41,33 @@ std::vector<std::size_t> FootprintSampler::contributing_texels(const MipTexel& t
 
 std::vector<Vector3> FootprintSampler::samples(const std::vector<std::size_t>& contributing,
                                                     std::size_t view) const {
-  const std::size_t per_texel = (sampling_.samples + contributing.size() - 1) / contributing.size();
   const Vector3 v = sampling_.views.direction(view);
-  std::vector<std::vector<Vector3>> lobes;
+  std::vector<LtcLookup> lobes;
+  std::vector<Frame> frames;
   lobes.reserve(contributing.size());
+  frames.reserve(contributing.size());
   for (std::size_t t : contributing) {
-    RandomStream stream(sampling_.seed, t, (component_key(sampling_.lobe.component) << 32) | view);
-    lobes.push_back(sample_base_lobe(sampling_.lobe, map_.normals()[t], v, per_texel, stream));
+    lobes.push_back(base_.at(map_.normals()[t], v));
+    frames.push_back(texel_frame(map_.normals()[t], v));
   }
+  const std::array<double, 2> offset = shift(contributing, view);
   const double phi = sampling_.views.phi(view % sampling_.views.n_phi);
   std::vector<Vector3> pooled;
   pooled.reserve(sampling_.samples);
-  for (std::size_t round = 0; pooled.size() < sampling_.samples; ++round)
-    for (std::size_t t = 0; t < lobes.size() && pooled.size() < sampling_.samples; ++t)
-      pooled.push_back(rotate_azimuth_to_zero(lobes[t][round], phi));
+  for (std::size_t k = 0; k < sampling_.samples; ++k) {
+    const std::size_t t = k % contributing.size();
+    const auto u = stratified_point(k, sampling_.samples, offset);
+    pooled.push_back(rotate_azimuth_to_zero(sample_base_lobe(lobes[t], frames[t], u), phi));
+  }
   return pooled;
+}
+
+std::array<double, 2> FootprintSampler::shift(const std::vector<std::size_t>& contributing, std::size_t view) const {
+  // Keyed by the footprint (its first texel and its size: unique across levels) and the view.
+  RandomStream random(sampling_.seed, (component_key(sampling_.lobe.component) << 32) | view,
+                      contributing.size() * map_.normals().size() + contributing.front());
+  const double x = random.uniform();
+  return {x, random.uniform()};
 }
 
 double FootprintSampler::amplitude(const MipTexel& texel, std::size_t view) const {
@@ -62,7 +76,7 @@ double FootprintSampler::amplitude(const MipTexel& texel, std::size_t view) cons
   double sum = 0.0;
   for (std::size_t dy = 0; dy < side; ++dy)
     for (std::size_t dx = 0; dx < side; ++dx)
-      sum += albedo_.at(v.dot(map_.normals()[(texel.x * side + dx) + (texel.y * side + dy) * map_.size()]));
+      sum += base_.at(map_.normals()[(texel.x * side + dx) + (texel.y * side + dy) * map_.size()], v).amplitude;
   return sum / double(side * side);
 }
 

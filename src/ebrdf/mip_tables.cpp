@@ -30,12 +30,22 @@ Bracket clamped(double position, std::size_t n) {
 
 Bracket theta_bracket(const ViewGrid& views, double theta) {
   if (views.n_theta == 1) return {0, 0, 0.0};
-  return clamped(theta / views.theta(views.n_theta - 1) * double(views.n_theta - 1), views.n_theta);
+  return clamped(views.theta_position(theta), views.n_theta);
+}
+
+// The turn about y that takes z to the mirror direction (-sin theta, 0, cos theta) of the view at
+// elevation theta and azimuth 0.
+Matrix3 mirror_frame(double theta) {
+  const double c = std::cos(theta), s = std::sin(theta);
+  Matrix3 r;
+  r << c, 0.0, -s, 0.0, 1.0, 0.0, s, 0.0, c;
+  return r;
 }
 
 }  // namespace
 
-LtcMipTables::LtcMipTables(ViewGrid views, std::vector<LtcLevel> levels) : views_(views), levels_(std::move(levels)) {
+LtcMipTables::LtcMipTables(ViewGrid views, std::vector<LtcLevel> levels, LobeAxis axis)
+    : views_(views), levels_(std::move(levels)), axis_(axis) {
   if (levels_.empty()) throw std::invalid_argument("ebrdf: an LTC mip hierarchy needs at least one level");
   for (const auto& level : levels_) {
     const std::size_t entries = level.side * level.side * views_.count();
@@ -51,6 +61,9 @@ void LtcMipTables::accumulate(std::size_t level, double u, double v, double thet
   const Bracket y = wrapped(v * double(table.side) - 0.5, table.side);
   const Bracket t = theta_bracket(views_, theta);
   const Bracket p = wrapped(phi / (2.0 * std::numbers::pi) * double(views_.n_phi), views_.n_phi);
+  // The tabulated views' mirror frames (identity for a lobe about the normal).
+  const Matrix3 low_frame = axis_ == LobeAxis::mirror ? Matrix3(mirror_frame(views_.theta(t.low)).transpose()) : Matrix3(Matrix3::Identity());
+  const Matrix3 high_frame = axis_ == LobeAxis::mirror ? Matrix3(mirror_frame(views_.theta(t.high)).transpose()) : Matrix3(Matrix3::Identity());
   for (int corner = 0; corner < 16; ++corner) {
     const double w = weight * ((corner & 1) ? x.t : 1 - x.t) * ((corner & 2) ? y.t : 1 - y.t) *
                      ((corner & 4) ? t.t : 1 - t.t) * ((corner & 8) ? p.t : 1 - p.t);
@@ -59,7 +72,9 @@ void LtcMipTables::accumulate(std::size_t level, double u, double v, double thet
     const std::size_t view = ((corner & 4) ? t.high : t.low) * views_.n_phi + ((corner & 8) ? p.high : p.low);
     const std::size_t entry = texel * views_.count() + view;
     const float* m = table.matrices.data() + 9 * entry;
-    for (int k = 0; k < 9; ++k) sum.matrix(k / 3, k % 3) += w * m[k];
+    Matrix3 matrix;
+    for (int k = 0; k < 9; ++k) matrix(k / 3, k % 3) = m[k];
+    sum.matrix += w * ((corner & 4) ? high_frame : low_frame) * matrix;
     sum.amplitude += w * table.amplitudes[entry];
   }
 }
@@ -72,6 +87,7 @@ LtcLookup LtcMipTables::lookup(double level, double u, double v, double theta, d
   sum.matrix.setZero();
   accumulate(low - 1, u, v, theta, phi, 1.0 - t, sum);
   if (t > 0.0 && low < levels_.size()) accumulate(low, u, v, theta, phi, t, sum);
+  if (axis_ == LobeAxis::mirror) sum.matrix = mirror_frame(theta) * sum.matrix;
   return sum;
 }
 

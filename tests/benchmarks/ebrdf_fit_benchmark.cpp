@@ -76,8 +76,8 @@ int main(int argc, char** argv) {
   for (const auto& name : normal_pattern_names()) {
     const NormalMap map = procedural_normal_map(normal_pattern_from(name), 128, 1);
     const EbrdfSampling sampling{{Component::specular, 0.01}, {8, 16}, 128, 1};
-    const AlbedoCurve albedo(sampling.lobe);
-    const FootprintSampler sampler(map, sampling, albedo);
+    const BaseLobeLtc base(sampling.lobe);
+    const FootprintSampler sampler(map, sampling, base);
     Tally per_map;
     for (std::size_t level = 1; level <= 7; ++level) {
       const Tally t = fit_level(sampler, level, count, descent);

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The reference renders of prefiltered tables are bitwise identical on 1 and 2 ranks (and threads), and after
 # a SIGTERM and a SIGKILL with resumes; every scene view has
-# its three renders, MSEs and texels per pixel; the report shows the renders and the error plot beside the
+# its three renders, MSEs, SSIMs, energies (plane and highlight) and texels per pixel; the report shows the renders and the error plot beside the
 # ebrdf report's levels; tables that are not a finished ebrdf result are refused naming the file.
 source "$(dirname "$0")/lib/common.bash"
 MPI_FLAGS+=(--bind-to none)
@@ -46,6 +46,17 @@ assert np.all(np.diff(texels, axis=1) > 0), texels          # further away: more
 assert r[:, :, 0].max() > 100, "the ground truth is black"
 assert np.any(r[:, 2, 0] != r[:, 2, 1]), "far away the naive render equals the ground truth"
 assert g.attrs["scenes"] == "top, grazing" and g.attrs["tables"] == "tables.h5"
+ssim, energy, highlight = g["ssim"][...], g["energy"][...], g["highlight_energy"][...]
+assert ssim.shape == (2, 3, 2) and np.all(ssim > 0.5) and np.all(ssim <= 1.0), ssim
+assert energy.shape == highlight.shape == (2, 3, 3) and np.all(energy > 0), energy
+assert np.all(highlight > 2 * energy), "the highlight is not brighter than the plane"
+# The energies are the renders' own: the ground truth's display image, linearized, has about its energy.
+linear = (r[:, :, 0, :, :, 0] / 255.0) ** 2.2
+plane = r[:, :, 0, :, :, 0] > 0
+for s in range(2):
+    for d in range(3):
+        mean = linear[s, d][plane[s, d]].mean()
+        assert abs(mean - energy[s, d, 0]) < 0.02 + 0.05 * energy[s, d, 0], (s, d, mean, energy[s, d, 0])
 PY
 
 note "reports of the tables and of the renders"
@@ -56,6 +67,8 @@ grep -q "MB of float32" tables-page/index.html || fail "the ebrdf report lacks t
 [[ ! -s err.txt ]] || { cat err.txt; fail "report wrote to stderr"; }
 grep -q "ebrdf_render/renders, scene grazing" render-page/index.html || fail "the report lacks the renders"
 grep -q "ebrdf_render/mse over texels per pixel" render-page/index.html || fail "the report lacks the MSE plot"
+grep -q "ebrdf_render/energy and highlight_energy" render-page/index.html || fail "the report lacks the energy plot"
+grep -q "ours energy / truth" render-page/index.html || fail "the report lacks the energy table"
 ! grep -q "cannot be shown" render-page/index.html tables-page/index.html || fail "a report part failed"
 
 note "tables that are not a finished ebrdf result are refused"

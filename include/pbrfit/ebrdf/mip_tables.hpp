@@ -26,13 +26,17 @@ struct LtcLookup {
   double amplitude = 0.0;
 };
 
+// The direction a component's lobe follows as the view turns.
+enum class LobeAxis { normal, mirror };
+
 class LtcMipTables {
  public:
   // levels[0] is mip level 1. Throws std::invalid_argument when sizes do not match.
-  LtcMipTables(ViewGrid views, std::vector<LtcLevel> levels);
+  LtcMipTables(ViewGrid views, std::vector<LtcLevel> levels, LobeAxis axis = LobeAxis::normal);
 
   std::size_t levels() const { return levels_.size(); }
   const ViewGrid& views() const { return views_; }
+  LobeAxis lobe_axis() const { return axis_; }
   // (u, v) in texture space (any real: the map tiles), theta and phi of the view in the geometric frame.
   LtcLookup lookup(double level, double u, double v, double theta, double phi) const;
 
@@ -42,6 +46,7 @@ class LtcMipTables {
 
   ViewGrid views_;
   std::vector<LtcLevel> levels_;
+  LobeAxis axis_;
 };
 
 }  // namespace pbrfit::ebrdf

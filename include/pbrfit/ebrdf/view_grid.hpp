@@ -1,8 +1,12 @@
 #pragma once
 // The tabulated view directions of an eBRDF table, in the geometric frame (z = the geometric normal):
-// n_theta elevations theta_i = i / (n_theta - 1) * 0.999 * pi / 2 (0.1 when n_theta = 1; Nahmias 2022,
-// section 3.4.1) and n_phi azimuths phi_j = 2 pi j / n_phi over the whole circle (the thesis repeats 0 as
-// 2 pi; here each azimuth is distinct and the table wraps).
+// n_theta elevations theta_i = 0.999 * pi / 2 * sin(i / (n_theta - 1) * pi / 2) from 0 to just above the
+// horizon (0.1 when n_theta = 1), and n_phi azimuths phi_j = 2 pi j / n_phi over the whole circle (the
+// thesis repeats 0 as 2 pi; here each azimuth is distinct and the table wraps).
+// The thesis (Nahmias 2022, section 3.4.1) spaces the elevations evenly; here they crowd towards grazing,
+// where a sharp lobe changes fastest (it is pressed against the horizon and leaves the mirror direction):
+// with 8 elevations the last interval is 87.6 to 89.9 degrees instead of 77.1 to 89.9, which halves the
+// error of a flat map's renders at grazing views (docs/BENCHMARKS.md, eBRDF fidelity).
 //
 // Invariants: view index = i * n_phi + j; direction() is a unit vector with z > 0.
 #include <cstddef>
@@ -17,6 +21,8 @@ struct ViewGrid {
 
   std::size_t count() const { return n_theta * n_phi; }
   double theta(std::size_t i) const;
+  // The continuous elevation index of theta (theta(i) -> i), clamped to [0, n_theta - 1].
+  double theta_position(double theta) const;
   double phi(std::size_t j) const;
   Vector3 direction(std::size_t view) const;
 };

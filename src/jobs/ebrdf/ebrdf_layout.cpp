@@ -61,8 +61,13 @@ store::Group level_group_layout(const EbrdfSettings& s, const ComponentSettings&
   g.attributes = {{"component", component_name(c.component)},
                   {"level", std::to_string(level)},
                   {"base_brdf", c.component == eb::Component::specular
-                                    ? "GGX, alpha = " + number(s.roughness * s.roughness) + ", F = 1, height-correlated Smith"
+                                    ? "the LTC of GGX (alpha = " + number(s.roughness * s.roughness) +
+                                          ", F = 1, height-correlated Smith) at each texel's view elevation, as MIP-0 shading uses it"
                                     : std::string("Lambert")},
+                  {"view_interpolation", c.component == eb::Component::specular
+                                             ? "in the mirror frame: interpolate R(theta_i)^T M over the views, then apply "
+                                               "R(theta), R the turn about y taking z to (-sin theta, 0, cos theta)"
+                                             : std::string("linear in M")},
                   {"alpha", c.component == eb::Component::specular ? exact(s.roughness * s.roughness) : "none"},
                   {"samples_per_ebrdf", std::to_string(s.samples)},
                   {"fit", fit_method_name(s.fit.method)},
@@ -72,7 +77,7 @@ store::Group level_group_layout(const EbrdfSettings& s, const ComponentSettings&
                              "|M^-1 w|^3, aligned (Kt et al. 2022) and scaled to |det M| = 1"}};
   g.axes = {{"v", texel_centres(side), "mip texel centre, (row + 0.5) / side"},
             {"u", texel_centres(side), "mip texel centre, (column + 0.5) / side"},
-            {"theta", thetas, "view elevation from the geometric normal, radians"},
+            {"theta", thetas, "view elevation from the geometric normal, radians: 0.999 pi/2 sin(i / (n - 1) pi/2)"},
             {"phi", phis, "view azimuth in the tangent plane (0 = +u), radians"},
             {"entry", indices(9), "matrix entry, row-major: m00 m01 m02 m10 ... m22"}};
   const std::vector<std::string> views = {"v", "u", "theta", "phi"};

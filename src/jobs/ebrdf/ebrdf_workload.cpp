@@ -31,7 +31,7 @@ std::string level_group(const ComponentSettings& component, std::size_t level) {
 }
 
 EbrdfWorkload::EbrdfWorkload(EbrdfSettings settings) : settings_(std::move(settings)), items_(settings_) {
-  for (const auto& c : settings_.components) albedo_.emplace_back(eb::BaseLobe{c.component, settings_.roughness * settings_.roughness});
+  for (const auto& c : settings_.components) base_lobes_.emplace_back(eb::BaseLobe{c.component, settings_.roughness * settings_.roughness});
   add_stage(runtime::stage<Nothing, Nothing, TileFits>("tiles", 1, this)
                 .items(&EbrdfWorkload::item_total)
                 .compute(&EbrdfWorkload::compute_item)
@@ -47,7 +47,7 @@ std::size_t EbrdfWorkload::fits_in(const TileItem& tile) const {
 EbrdfWorkload::TileFits EbrdfWorkload::fit_tile(const TileItem& tile, const Task& task) const {
   const ComponentSettings& component = settings_.components[tile.component];
   const eb::FootprintSampler sampler(*settings_.map, sampling_for(settings_, component, task.seed()),
-                                     albedo_[tile.component]);
+                                     base_lobes_[tile.component]);
   const std::size_t views = component.views.count();
   std::vector<float> out;
   out.reserve(fits_in(tile) * values_per_fit);

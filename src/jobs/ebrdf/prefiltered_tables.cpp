@@ -43,7 +43,8 @@ std::optional<eb::LtcMipTables> read_component(const std::string& path, const st
   }
   if (levels.empty()) throw InputError({path}, "ebrdf/" + component + " holds no mip level");
   try {
-    return eb::LtcMipTables(views, std::move(levels));
+    return eb::LtcMipTables(views, std::move(levels),
+                            component == "specular" ? eb::LobeAxis::mirror : eb::LobeAxis::normal);
   } catch (const std::invalid_argument& e) {
     throw InputError({path}, std::string("ebrdf/") + component + ": " + e.what());
   }

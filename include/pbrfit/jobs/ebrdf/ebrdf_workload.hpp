@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "pbrfit/ebrdf/albedo_curve.hpp"
+#include "pbrfit/ebrdf/base_lobe.hpp"
 #include "pbrfit/jobs/ebrdf/ebrdf_items.hpp"
 #include "pbrfit/jobs/ebrdf/ebrdf_settings.hpp"
 #include "pbrfit/runtime/staged_workload.hpp"
@@ -53,7 +53,7 @@ class EbrdfWorkload final : public runtime::StagedWorkload<EbrdfSummary> {
 
   EbrdfSettings settings_;
   TileItems items_;
-  std::vector<pbrfit::ebrdf::AlbedoCurve> albedo_;  // per component
+  std::vector<pbrfit::ebrdf::BaseLobeLtc> base_lobes_;  // per component
 };
 
 }  // namespace pbrfit::jobs::ebrdf

@@ -1,14 +1,15 @@
 # `ebrdf` and `ebrdf_render` results (docs/results-ebrdf.md). ebrdf: the filtered normal map as a picture,
 # each component's fit error by mip level (table and plot) and the tables' size; the generic sections then
 # show every level's tables. ebrdf_render: each scene's renders side by side (ground truth, naive, ours,
-# with their MSE) and the MSE over texels per pixel.
+# with their MSE), per scene and distance the MSE, the SSIM and the energy (whole plane and highlight) of
+# naive and ours against the ground truth, and plots of the MSE and of the energy ratio over texels per pixel.
 import numpy as np
 
 from ... import html_page as page
 from ...generic import Renderer, guarded
 from ...statistics import number
 from .. import register
-from .error_figures import level_error_figure, mse_figure
+from .error_figures import energy_figure, level_error_figure, mse_figure
 from .render_grid import render_grid
 
 
@@ -70,20 +71,45 @@ class EbrdfRenderer(Renderer):
         return guarded(lambda: _ebrdf_parts(report, report.file), "ebrdf")
 
 
+def _ratio(value, truth):
+    return number(value / truth) if truth > 0 else "-"
+
+
 def _render_parts(report, file):
     g = file["ebrdf_render"]
     scenes = g.attrs["scenes"].split(", ")
     distances = g["distance"][...]
     mse, texels = g["mse"][...], g["texels_per_pixel"][...]
+    # Results written before the energy and SSIM measures have neither.
+    measured = all(name in g for name in ("ssim", "energy", "highlight_energy"))
     parts = [page.heading(2, "Renders: ground truth, naive, prefiltered", "ebrdf_render"),
              page.paragraph(f"{g.attrs.get('shading', '')}. MSE: {g.attrs.get('mse', '')}.")]
-    rows = [[scenes[s], number(distances[d]), number(texels[s, d]), number(mse[s, d, 0]), number(mse[s, d, 1]),
-             "yes" if mse[s, d, 1] < mse[s, d, 0] else "no"]
-            for s in range(len(scenes)) for d in range(len(distances)) if np.isfinite(mse[s, d, 0])]
-    parts.append(page.table(["scene", "distance", "texels per pixel", "naive MSE", "ours MSE", "ours lower"],
-                            rows, (1, 2, 3, 4)))
+    header = ["scene", "distance", "texels per pixel", "naive MSE", "ours MSE", "ours lower"]
+    rows = []
+    for s in range(len(scenes)):
+        for d in range(len(distances)):
+            if not np.isfinite(mse[s, d, 0]):
+                continue
+            row = [scenes[s], number(distances[d]), number(texels[s, d]), number(mse[s, d, 0]), number(mse[s, d, 1]),
+                   "yes" if mse[s, d, 1] < mse[s, d, 0] else "no"]
+            if measured:
+                ssim, energy, highlight = g["ssim"][s, d], g["energy"][s, d], g["highlight_energy"][s, d]
+                row += [number(ssim[0]), number(ssim[1]), _ratio(energy[1], energy[0]), _ratio(energy[2], energy[0]),
+                        _ratio(highlight[1], highlight[0]), _ratio(highlight[2], highlight[0])]
+            rows.append(row)
+    if measured:
+        header += ["naive SSIM", "ours SSIM", "naive energy / truth", "ours energy / truth",
+                   "naive highlight / truth", "ours highlight / truth"]
+    parts.append(page.table(header, rows, tuple(i for i in range(1, len(header)) if i != 5)))
+    if measured:
+        parts.append(page.paragraph("Energy: " + g.attrs.get("energy", "") + "; highlight: " +
+                                    g.attrs.get("highlight_energy", "") + ". A ratio of 1 is the ground truth's energy."))
     parts += _figure(report, lambda: mse_figure(scenes, texels, mse), "MSE by texels per pixel",
                      "ebrdf_render/mse over texels per pixel at the image centre")
+    if measured:
+        energy, highlight = g["energy"][...], g["highlight_energy"][...]
+        parts += _figure(report, lambda: energy_figure(scenes, texels, energy, highlight), "energy by texels per pixel",
+                         "ebrdf_render/energy and highlight_energy of naive and ours over the ground truth's")
     renders = g["renders"]
     for s, scene in enumerate(scenes):
         parts += _figure(report, lambda s=s: render_grid(renders[s], distances, texels[s], mse[s]), f"{scene} renders",
