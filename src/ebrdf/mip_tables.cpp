@@ -54,29 +54,65 @@ LtcMipTables::LtcMipTables(ViewGrid views, std::vector<LtcLevel> levels, LobeAxi
   }
 }
 
-void LtcMipTables::accumulate(std::size_t level, double u, double v, double theta, double phi, double weight,
-                              LtcLookup& sum) const {
-  const LtcLevel& table = levels_[level];
-  const Bracket x = wrapped(u * double(table.side) - 0.5, table.side);
-  const Bracket y = wrapped(v * double(table.side) - 0.5, table.side);
+void LtcMipTables::accumulate_views(const LtcLevel& table, std::size_t texel, double theta, double phi, double weight,
+                                    LtcLookup& sum) const {
   const Bracket t = theta_bracket(views_, theta);
   const Bracket p = wrapped(phi / (2.0 * std::numbers::pi) * double(views_.n_phi), views_.n_phi);
   // The tabulated views' mirror frames (identity for a lobe about the normal).
   const Matrix3 low_frame = axis_ == LobeAxis::mirror ? Matrix3(mirror_frame(views_.theta(t.low)).transpose()) : Matrix3(Matrix3::Identity());
   const Matrix3 high_frame = axis_ == LobeAxis::mirror ? Matrix3(mirror_frame(views_.theta(t.high)).transpose()) : Matrix3(Matrix3::Identity());
-  for (int corner = 0; corner < 16; ++corner) {
-    const double w = weight * ((corner & 1) ? x.t : 1 - x.t) * ((corner & 2) ? y.t : 1 - y.t) *
-                     ((corner & 4) ? t.t : 1 - t.t) * ((corner & 8) ? p.t : 1 - p.t);
+  for (int corner = 0; corner < 4; ++corner) {
+    const double w = weight * ((corner & 1) ? t.t : 1 - t.t) * ((corner & 2) ? p.t : 1 - p.t);
     if (w == 0.0) continue;
-    const std::size_t texel = ((corner & 2) ? y.high : y.low) * table.side + ((corner & 1) ? x.high : x.low);
-    const std::size_t view = ((corner & 4) ? t.high : t.low) * views_.n_phi + ((corner & 8) ? p.high : p.low);
+    const std::size_t view = ((corner & 1) ? t.high : t.low) * views_.n_phi + ((corner & 2) ? p.high : p.low);
     const std::size_t entry = texel * views_.count() + view;
     const float* m = table.matrices.data() + 9 * entry;
     Matrix3 matrix;
     for (int k = 0; k < 9; ++k) matrix(k / 3, k % 3) = m[k];
-    sum.matrix += w * ((corner & 4) ? high_frame : low_frame) * matrix;
+    sum.matrix += w * ((corner & 1) ? high_frame : low_frame) * matrix;
     sum.amplitude += w * table.amplitudes[entry];
   }
+}
+
+void LtcMipTables::accumulate(std::size_t level, double u, double v, double theta, double phi, double weight,
+                              LtcLookup& sum) const {
+  const LtcLevel& table = levels_[level];
+  const Bracket x = wrapped(u * double(table.side) - 0.5, table.side);
+  const Bracket y = wrapped(v * double(table.side) - 0.5, table.side);
+  for (int corner = 0; corner < 4; ++corner) {
+    const double w = weight * ((corner & 1) ? x.t : 1 - x.t) * ((corner & 2) ? y.t : 1 - y.t);
+    if (w == 0.0) continue;
+    accumulate_views(table, ((corner & 2) ? y.high : y.low) * table.side + ((corner & 1) ? x.high : x.low), theta,
+                     phi, w, sum);
+  }
+}
+
+std::vector<WeightedLtc> LtcMipTables::texel_lobes(double level, double u, double v, double theta,
+                                                   double phi) const {
+  const double l = std::clamp(level, 1.0, double(levels_.size()));
+  const auto low = std::min(levels_.size(), static_cast<std::size_t>(l));
+  const double t = l - double(low);
+  const Matrix3 turn = axis_ == LobeAxis::mirror ? mirror_frame(theta) : Matrix3(Matrix3::Identity());
+  std::vector<WeightedLtc> lobes;
+  for (std::size_t k = 0; k < 2; ++k) {
+    const std::size_t index = low - 1 + k;
+    const double level_weight = k == 0 ? 1.0 - t : t;
+    if (level_weight == 0.0 || index >= levels_.size()) continue;
+    const LtcLevel& table = levels_[index];
+    const Bracket x = wrapped(u * double(table.side) - 0.5, table.side);
+    const Bracket y = wrapped(v * double(table.side) - 0.5, table.side);
+    for (int corner = 0; corner < 4; ++corner) {
+      const double w = level_weight * ((corner & 1) ? x.t : 1 - x.t) * ((corner & 2) ? y.t : 1 - y.t);
+      if (w == 0.0) continue;
+      const std::size_t texel = ((corner & 2) ? y.high : y.low) * table.side + ((corner & 1) ? x.high : x.low);
+      LtcLookup lobe;
+      lobe.matrix.setZero();
+      accumulate_views(table, texel, theta, phi, 1.0, lobe);
+      lobe.matrix = turn * lobe.matrix;
+      lobes.push_back({w, lobe});
+    }
+  }
+  return lobes;
 }
 
 LtcLookup LtcMipTables::lookup(double level, double u, double v, double theta, double phi) const {

@@ -120,7 +120,13 @@ double ours(const PlaneScene& scene, const RenderInputs& in, const Vector3& p, d
   Polygon rotated;
   for (std::size_t i = 0; i < 4; ++i) rotated[i] = rotate_azimuth_to_zero(light[i], phi);
   const auto component = [&](const LtcMipTables* tables) {
-    return tables ? ltc_integral(tables->lookup(level, p.x(), p.y(), theta, phi), rotated) : 0.0;
+    if (!tables) return 0.0;
+    if (in.shading.filtering == TableFiltering::matrices)
+      return ltc_integral(tables->lookup(level, p.x(), p.y(), theta, phi), rotated);
+    double sum = 0.0;
+    for (const auto& texel : tables->texel_lobes(level, p.x(), p.y(), theta, phi))
+      sum += texel.weight * ltc_integral(texel.lobe, rotated);
+    return sum;
   };
   return in.shading.light_radiance *
          (in.shading.specular * component(in.specular) + in.shading.diffuse * component(in.diffuse));

@@ -25,6 +25,18 @@ run_ranks 2 run render.yaml --output r2.h5 --threads 2 -q
 expect_status 0
 expect_identical r1.h5 r2.h5 /ebrdf_render
 
+note "filtering: matrices changes ours alone"
+sed 's|^  resolution: 24|  resolution: 24\n  filtering: matrices|' render.yaml >matrices.yaml
+run_ranks 1 run matrices.yaml --output matrices.h5 -q
+expect_status 0
+"$H5PY_PYTHON" - <<'PY' || fail "filtering: matrices changed more than ours, or nothing"
+import h5py, numpy as np
+a = h5py.File("r2.h5", "r")["ebrdf_render/renders"][...]
+b = h5py.File("matrices.h5", "r")["ebrdf_render/renders"][...]
+assert np.array_equal(a[:, :, :2], b[:, :, :2]), "the ground truth or naive changed"
+assert not np.array_equal(a[:, :, 2], b[:, :, 2]), "ours is the same"
+PY
+
 note "SIGTERM, resume, SIGKILL, resume: the same renders"
 sed -e 's|distances: \[1, 4, 16\]|distances: [1, 2, 4, 8, 16, 32]|' -e 's|resolution: 24|resolution: 96|' \
   -e 's|^output: render.h5|output: result.h5\ncheckpoint: {interval_seconds: 0.2, interval_items: 1}|' render.yaml >long.yaml

@@ -9,7 +9,9 @@
 //    shaded like a MIP-0 point;
 //  - ours: the prefiltered LTC tables (mip_tables.hpp: bilinear in views, trilinear in mips), the polygon
 //    taken to the frame where the view azimuth is 0; below two texels per pixel MIP-0 shading of the
-//    pixel centre's texel.
+//    pixel centre's texel. TableFiltering::results shades each of the up to 8 mip texels a lookup blends
+//    and blends what they shade (the radiance a pixel's footprint averages, as the ground truth does);
+//    TableFiltering::matrices blends their matrices and shades once (what a cheap shader does).
 // rho is the larger of the pixel's two texture-space steps (to the next column and row) in texels.
 //
 // Contract: images are resolution x resolution linear radiance (grey in all three channels), 0 where the
@@ -28,11 +30,14 @@ namespace pbrfit::ebrdf {
 
 enum class RenderMethod { ground_truth, naive, ours };
 
+enum class TableFiltering { results, matrices };
+
 struct Shading {
   double light_radiance = 2.5;
   double specular = 0.3;  // colour (grey) of each component
   double diffuse = 0.6;
   std::size_t min_samples = 4;
+  TableFiltering filtering = TableFiltering::results;
 };
 
 struct RenderInputs {

@@ -38,6 +38,12 @@ spec::Keys<RenderSettings> render_keys() {
   k.number("diffuse", "grey colour of the diffuse component", [](S& s, double v) { s.shading.diffuse = v; })
       .range(0.0, 1.0)
       .defaults_to(0.6);
+  k.choice<eb::TableFiltering>(
+       "filtering", {{"results", eb::TableFiltering::results}, {"matrices", eb::TableFiltering::matrices}},
+       "ours: results blends what each of the up to 8 mip texels of a lookup shades; matrices blends their "
+       "matrices and shades once, as a cheap shader would",
+       [](S& s, eb::TableFiltering f) { s.shading.filtering = f; })
+      .defaults_to(std::string("results"));
   k.number("exposure", "factor on the linear radiance before the sRGB display transform", &S::exposure)
       .above(0.0)
       .defaults_to(1.0);

@@ -162,10 +162,12 @@ store::ResultLayout RenderWorkload::layout() const {
   g.name = "ebrdf_render";
   g.description = "a normal-mapped plane under a rectangular light (Nahmias 2022, chapter 4): ground truth "
                   "(supersampled MIP-0 texels), naive (mip-mapped normals) and ours (prefiltered LTCs)";
-  char shading[200];
-  std::snprintf(shading, sizeof shading, "light radiance %g; specular %g (GGX alpha %g) + diffuse %g (Lambert); exposure %g",
+  char shading[260];
+  std::snprintf(shading, sizeof shading,
+                "light radiance %g; specular %g (GGX alpha %g) + diffuse %g (Lambert); exposure %g; ours blends the %s",
                 settings_.shading.light_radiance, settings_.shading.specular, settings_.tables->alpha,
-                settings_.shading.diffuse, settings_.exposure);
+                settings_.shading.diffuse, settings_.exposure,
+                settings_.shading.filtering == eb::TableFiltering::results ? "mip texels' results" : "mip texels' matrices");
   std::vector<double> scenes(settings_.scenes.size());
   std::string scene_names;
   for (std::size_t i = 0; i < scenes.size(); ++i) {

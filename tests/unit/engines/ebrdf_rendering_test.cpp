@@ -50,6 +50,24 @@ TEST_CASE("LTC mip lookups interpolate between levels, texels and views, wrappin
   CHECK(tables.lookup(1.5, 0.25, 0.25, 1.0, 1.0).amplitude == Catch::Approx(1.5));  // between levels
   CHECK(tables.lookup(9.0, 0.1, 0.9, 1.0, 1.0).matrix(0, 0) == Catch::Approx(2.0));  // clamped to the coarsest
   CHECK_THROWS_AS(LtcMipTables(views, {constant_level(2, ViewGrid{1, 1}, 1.0f)}), std::invalid_argument);
+  // The same lookup as the mip texels it blends: weights summing to 1, blended matrices equal to lookup()'s.
+  for (const double level : {1.0, 1.5, 2.0})
+    for (const LobeAxis axis : {LobeAxis::normal, LobeAxis::mirror}) {
+      const LtcMipTables both(views, {fine, constant_level(1, views, 2.0f)}, axis);
+      const auto lobes = both.texel_lobes(level, 0.6, 0.3, 0.7, 1.1);
+      CHECK(lobes.size() == (level == 1.5 ? 8u : 4u));
+      double weights = 0.0, amplitude = 0.0;
+      Matrix3 blended = Matrix3::Zero();
+      for (const auto& texel : lobes) {
+        weights += texel.weight;
+        amplitude += texel.weight * texel.lobe.amplitude;
+        blended += texel.weight * texel.lobe.matrix;
+      }
+      const LtcLookup whole = both.lookup(level, 0.6, 0.3, 0.7, 1.1);
+      CHECK(weights == Catch::Approx(1.0));
+      CHECK(amplitude == Catch::Approx(whole.amplitude));
+      CHECK((blended - whole.matrix).norm() < 1e-12);
+    }
 }
 
 TEST_CASE("a specular lobe's matrices are interpolated in the mirror frame: a lobe that follows the mirror keeps its shape") {
