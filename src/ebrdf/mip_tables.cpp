@@ -74,19 +74,6 @@ void LtcMipTables::accumulate_views(const LtcLevel& table, std::size_t texel, do
   }
 }
 
-void LtcMipTables::accumulate(std::size_t level, double u, double v, double theta, double phi, double weight,
-                              LtcLookup& sum) const {
-  const LtcLevel& table = levels_[level];
-  const Bracket x = wrapped(u * double(table.side) - 0.5, table.side);
-  const Bracket y = wrapped(v * double(table.side) - 0.5, table.side);
-  for (int corner = 0; corner < 4; ++corner) {
-    const double w = weight * ((corner & 1) ? x.t : 1 - x.t) * ((corner & 2) ? y.t : 1 - y.t);
-    if (w == 0.0) continue;
-    accumulate_views(table, ((corner & 2) ? y.high : y.low) * table.side + ((corner & 1) ? x.high : x.low), theta,
-                     phi, w, sum);
-  }
-}
-
 std::vector<WeightedLtc> LtcMipTables::texel_lobes(double level, double u, double v, double theta,
                                                    double phi) const {
   const double l = std::clamp(level, 1.0, double(levels_.size()));
@@ -116,14 +103,12 @@ std::vector<WeightedLtc> LtcMipTables::texel_lobes(double level, double u, doubl
 }
 
 LtcLookup LtcMipTables::lookup(double level, double u, double v, double theta, double phi) const {
-  const double l = std::clamp(level, 1.0, double(levels_.size()));
-  const auto low = std::min(levels_.size(), static_cast<std::size_t>(l));
-  const double t = l - double(low);
   LtcLookup sum;
   sum.matrix.setZero();
-  accumulate(low - 1, u, v, theta, phi, 1.0 - t, sum);
-  if (t > 0.0 && low < levels_.size()) accumulate(low, u, v, theta, phi, t, sum);
-  if (axis_ == LobeAxis::mirror) sum.matrix = mirror_frame(theta) * sum.matrix;
+  for (const WeightedLtc& texel : texel_lobes(level, u, v, theta, phi)) {
+    sum.matrix += texel.weight * texel.lobe.matrix;
+    sum.amplitude += texel.weight * texel.lobe.amplitude;
+  }
   return sum;
 }
 

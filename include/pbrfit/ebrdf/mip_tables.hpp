@@ -45,14 +45,12 @@ class LtcMipTables {
   LobeAxis lobe_axis() const { return axis_; }
   // (u, v) in texture space (any real: the map tiles), theta and phi of the view in the geometric frame.
   LtcLookup lookup(double level, double u, double v, double theta, double phi) const;
-  // The same lookup as the up to 8 mip texels it blends (4 per level, 2 levels), each interpolated
-  // between views, with their weights (summing to 1): for blending what each lobe shades rather than
-  // the matrices.
+  // The up to 8 mip texels a lookup blends (4 per level, 2 levels), each interpolated between views,
+  // with their weights (summing to 1): for blending what each lobe shades rather than the matrices.
+  // lookup() is their weighted sum.
   std::vector<WeightedLtc> texel_lobes(double level, double u, double v, double theta, double phi) const;
 
  private:
-  void accumulate(std::size_t level, double u, double v, double theta, double phi, double weight,
-                  LtcLookup& sum) const;
   void accumulate_views(const LtcLevel& table, std::size_t texel, double theta, double phi, double weight,
                         LtcLookup& sum) const;
 
