@@ -92,9 +92,10 @@ function(pbrfit_kernel_set_sources target sources)
     endif()
     if(PBRFIT_X86_KERNELS)
       list(APPEND options ${PBRFIT_KERNEL_FLAGS_${set_name}})
-      # GCC 12's own AVX-512 intrinsics warn of their undefined-on-purpose operand (GCC bug 105593).
+      # GCC 12's own AVX-512 intrinsics warn of their undefined-on-purpose operand (GCC bug 105593),
+      # as maybe-uninitialized in the GP kernels and as uninitialized in the DFG line kernel.
       if(set_name STREQUAL "avx512" AND CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
-        list(APPEND options -Wno-maybe-uninitialized)
+        list(APPEND options -Wno-maybe-uninitialized -Wno-uninitialized)
       endif()
     endif()
     set_source_files_properties(${source} TARGET_DIRECTORY ${target} PROPERTIES SKIP_UNITY_BUILD_INCLUSION ON

@@ -31,6 +31,8 @@
 #include <limits>
 #include <numbers>
 
+#include "dfg_line.hpp"
+#include "pbrfit/integrate/gauss_kronrod.hpp"
 #include "fixed_view_visibility.hpp"
 
 namespace pbrfit::brdf {
@@ -59,7 +61,8 @@ class DfgIntegrand {
       : n_dot_v_(n_dot_v),
         sin_theta_v_(std::sqrt(std::max(0.0, 1.0 - n_dot_v * n_dot_v))),
         alpha_(alpha),
-        visibility_(alpha, n_dot_v) {}
+        visibility_(alpha, n_dot_v),
+        line_kernel_(detail::dfg_line_kernel<Convention>(active_kernel_set())) {}
 
   // The integrand restricted to one azimuth; everything that depends on phi only is computed here.
   class AzimuthSlice {
@@ -97,6 +100,16 @@ class DfgIntegrand {
       return {weight * (1.0 - fresnel), weight * fresnel};
     }
 
+    // The 15 points (t, s[i]) at once, as the tensor rule's line fast path (integrate/outer_binding.hpp):
+    // out[2 i], out[2 i + 1] as operator() gives them, up to the vector exp's rounding (dfg_line.hpp).
+    void line(const std::array<double, 2>& /*t is bound*/, const double* s, double* out) const {
+      static_assert(detail::dfg_line_points == integrate::gauss_kronrod::kronrod_size);
+      const DfgIntegrand& in = integrand_;
+      const detail::DfgLine<Convention> line{in.visibility_, in.n_dot_v_, in.alpha_, sin_theta_v_cos_phi_, y_max_,
+                                             slice_jacobian_};
+      in.line_kernel_(line, s, out);
+    }
+
    private:
     const DfgIntegrand& integrand_;
     double sin_theta_v_cos_phi_;
@@ -113,6 +126,7 @@ class DfgIntegrand {
   double sin_theta_v_;
   double alpha_;
   FixedViewVisibility<Convention> visibility_;
+  detail::DfgLineKernel<Convention> line_kernel_;  // of the process's kernel set
 };
 
 }  // namespace pbrfit::brdf

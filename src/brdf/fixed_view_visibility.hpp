@@ -46,6 +46,11 @@ class FixedViewVisibility {
   // V(v, l) for n.l >= 0.
   double visibility(double n_dot_l) const { return numerator() / denominator(n_dot_l); }
 
+  // The terms of denominator(), for vector code that evaluates it over many n.l (dfg_line_kernels.hpp).
+  double alpha_squared() const { return alpha_squared_; }
+  double view_term() const { return view_term_; }
+  double k() const { return k_; }
+
  private:
   double alpha_squared_;
   double n_dot_v_;

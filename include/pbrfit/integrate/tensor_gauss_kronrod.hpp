@@ -5,7 +5,8 @@
 //  - the integrand is sampled once per point of the 15^Dim Kronrod grid; every Gauss or mixed tensor
 //    rule reuses those samples (the G7 nodes are nested in K15);
 //  - samples are taken in row-major order of the grid (x[0] slowest), so the evaluation order, and
-//    therefore every floating-point result, depends only on the box.
+//    therefore every floating-point result, depends only on the box; an integrand with the line fast path
+//    (outer_binding.hpp) gives each line of 15 samples along the last axis in one call.
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -68,11 +69,16 @@ class TensorGaussKronrod {
     std::array<int, Dim> index{};
     for (int d = first_axis; d < Dim; ++d) x[d] = coords[d][0];
     while (true) {
-      for (int i = 0; i < n; ++i) {  // last axis, fastest
-        x[Dim - 1] = coords[Dim - 1][i];
-        const std::array<double, Comp> value = g(x);
-        for (int c = 0; c < Comp; ++c) out[c] = value[c];
-        out += Comp;
+      if constexpr (LineEvaluable<Callable, Dim>) {  // last axis, fastest
+        g.line(x, coords[Dim - 1].data(), out);
+        out += n * Comp;
+      } else {
+        for (int i = 0; i < n; ++i) {
+          x[Dim - 1] = coords[Dim - 1][i];
+          const std::array<double, Comp> value = g(x);
+          for (int c = 0; c < Comp; ++c) out[c] = value[c];
+          out += Comp;
+        }
       }
       int d = Dim - 2;  // odometer over axes first_axis .. Dim-2
       while (d >= first_axis && ++index[d] == n) {

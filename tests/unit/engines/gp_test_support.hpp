@@ -5,6 +5,7 @@
 #include <functional>
 #include <span>
 
+#include "kernel_set_scope.hpp"
 #include "pbrfit/core/kernel_set.hpp"
 #include "pbrfit/core/random_stream.hpp"
 #include "pbrfit/gp/dataset.hpp"
@@ -13,17 +14,7 @@
 
 namespace gp_test {
 
-// Uses a kernel set for its lifetime, then the one before.
-class KernelSetScope {
- public:
-  explicit KernelSetScope(pbrfit::KernelSet set) : saved_(pbrfit::active_kernel_set()) { pbrfit::use_kernel_set(set); }
-  ~KernelSetScope() { pbrfit::use_kernel_set(saved_); }
-  KernelSetScope(const KernelSetScope&) = delete;
-  KernelSetScope& operator=(const KernelSetScope&) = delete;
-
- private:
-  pbrfit::KernelSet saved_;
-};
+using kernel_test::KernelSetScope;
 
 // `rows` rows of `inputs` uniform inputs in [lower, upper], target f(row).
 inline pbrfit::gp::Dataset sampled_dataset(std::size_t rows, std::size_t inputs, double lower, double upper,
