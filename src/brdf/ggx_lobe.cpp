@@ -4,6 +4,7 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "ggx_lobe_batch.hpp"
 #include "pbrfit/brdf/ggx.hpp"
 
 namespace pbrfit::brdf {
@@ -44,6 +45,12 @@ GgxLobe::Evaluation GgxLobe::evaluate(const Vector3& l) const {
   result.pdf = masking_ * scale;
   if (l.z() > 0.0) result.value = scale / (1.0 + view_lambda_ + ggx_smith_lambda(alpha_, l.z()));
   return result;
+}
+
+void GgxLobe::evaluate_many(std::span<const Vector3> l, std::span<Evaluation> out) const {
+  if (l.empty()) return;
+  const detail::GgxLobeConstants constants{alpha_, view().x(), view().y(), view().z(), view_lambda_, masking_};
+  detail::ggx_lobe_batch(active_kernel_set())(constants, l.data(), l.size(), out.data());
 }
 
 Vector3 GgxLobe::sample(double u1, double u2) const { return sample_ggx_visible_reflection(alpha_, view(), u1, u2); }

@@ -1,5 +1,7 @@
 #include "pbrfit/ltc/fit_error.hpp"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 
@@ -25,14 +27,25 @@ FitErrorEstimator::FitErrorEstimator(std::shared_ptr<const brdf::Lobe> target, s
   target_l2_ = points > 0 ? std::sqrt(squared / static_cast<double>(points)) : 0.0;
 }
 
-// Calls accumulate(difference, pdf_target + pdf_ltc) once per sample of each strategy.
+// Calls accumulate(difference, pdf_target + pdf_ltc) once per sample of each strategy, in order. The
+// LTC's samples reach the target in groups, through Lobe::evaluate_many (vector code where the lobe has it).
 template <class Accumulate>
 void FitErrorEstimator::visit(const LtcDistribution& ltc, Accumulate&& accumulate) const {
   const double amplitude = ltc.amplitude();
-  for (const Vector3& base : base_) {
-    const LtcDistribution::Transformed sample = ltc.transform(base);
-    const brdf::Lobe::Evaluation target = target_->evaluate(sample.direction);
-    accumulate(target.value - amplitude * sample.pdf, target.pdf + sample.pdf);
+  constexpr std::size_t group = 64;
+  std::array<Vector3, group> directions;
+  std::array<double, group> ltc_pdf;
+  std::array<brdf::Lobe::Evaluation, group> target;
+  for (std::size_t first = 0; first < base_.size(); first += group) {
+    const std::size_t n = std::min(group, base_.size() - first);
+    for (std::size_t i = 0; i < n; ++i) {
+      const LtcDistribution::Transformed sample = ltc.transform(base_[first + i]);
+      directions[i] = sample.direction;
+      ltc_pdf[i] = sample.pdf;
+    }
+    target_->evaluate_many({directions.data(), n}, {target.data(), n});
+    for (std::size_t i = 0; i < n; ++i)
+      accumulate(target[i].value - amplitude * ltc_pdf[i], target[i].pdf + ltc_pdf[i]);
   }
   for (const TargetSample& sample : target_samples_) {
     const double pdf = ltc.pdf(sample.direction);

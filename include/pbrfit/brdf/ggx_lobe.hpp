@@ -28,6 +28,8 @@ class GgxLobe final : public Lobe {
   double view_masking() const { return masking_; }  // G1(v)
 
   Evaluation evaluate(const Vector3& l) const override;
+  // evaluate() over many directions as vector code of the process's kernel set (ggx_lobe_batch.hpp).
+  void evaluate_many(std::span<const Vector3> l, std::span<Evaluation> out) const override;
   Vector3 sample(double u1, double u2) const override;
 
  private:

@@ -1,0 +1,6 @@
+// The GGX lobe batch kernel compiled for AVX2 with FMA (core/kernel_set.hpp);
+// cmake/layers.cmake gives files named *_isa_<set>.cpp their flags, contraction into FMA off.
+#if defined(PBRFIT_X86_KERNELS)
+#define PBRFIT_KERNEL_ISA avx2
+#include "ggx_lobe_batch_kernels.hpp"
+#endif

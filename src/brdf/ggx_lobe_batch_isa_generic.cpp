@@ -1,0 +1,4 @@
+// The GGX lobe batch kernel compiled for the build's own target (no instruction-set flags) (core/kernel_set.hpp);
+// cmake/layers.cmake gives files named *_isa_<set>.cpp their flags, contraction into FMA off.
+#define PBRFIT_KERNEL_ISA generic
+#include "ggx_lobe_batch_kernels.hpp"
