@@ -1,5 +1,7 @@
 #include "pbrfit/brdf/ggx_lobe.hpp"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -51,6 +53,15 @@ void GgxLobe::evaluate_many(std::span<const Vector3> l, std::span<Evaluation> ou
   if (l.empty()) return;
   const detail::GgxLobeConstants constants{alpha_, view().x(), view().y(), view().z(), view_lambda_, masking_};
   detail::ggx_lobe_batch(active_kernel_set())(constants, l.data(), l.size(), out.data());
+}
+
+void GgxLobe::value_many(std::span<const Vector3> l, std::span<double> out) const {
+  std::array<Evaluation, 64> group;
+  for (std::size_t first = 0; first < l.size(); first += group.size()) {
+    const std::size_t n = std::min(group.size(), l.size() - first);
+    evaluate_many(l.subspan(first, n), std::span(group.data(), n));
+    for (std::size_t i = 0; i < n; ++i) out[first + i] = group[i].value;
+  }
 }
 
 Vector3 GgxLobe::sample(double u1, double u2) const { return sample_ggx_visible_reflection(alpha_, view(), u1, u2); }

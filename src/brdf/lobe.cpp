@@ -13,6 +13,10 @@ Vector3 view_in_xz_plane(double cos_theta_view) {
 
 Lobe::Lobe(double cos_theta_view) : view_(view_in_xz_plane(cos_theta_view)) {}
 
+void Lobe::value_many(std::span<const Vector3> l, std::span<double> out) const {
+  for (std::size_t i = 0; i < l.size(); ++i) out[i] = value(l[i]);
+}
+
 void Lobe::evaluate_many(std::span<const Vector3> l, std::span<Evaluation> out) const {
   for (std::size_t i = 0; i < l.size(); ++i) out[i] = evaluate(l[i]);
 }

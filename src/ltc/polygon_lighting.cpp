@@ -1,6 +1,7 @@
 #include "pbrfit/ltc/polygon_lighting.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -8,6 +9,7 @@
 
 #include "pbrfit/core/random_stream.hpp"
 #include "pbrfit/integrate/adaptive_cubature.hpp"
+#include "pbrfit/integrate/gauss_kronrod.hpp"
 #include "polygon_clipping.hpp"
 
 namespace pbrfit::ltc {
@@ -81,6 +83,53 @@ struct FanTriangle {
   double double_area = 0.0;
 };
 
+// The lobe over the fan's triangles: triangle k occupies [k, k + 1] x [0, 1] of (s, tau), tiles never
+// straddle two. A point is apex + tau^4 (from + s edge - apex), so that the integrand stays smooth where
+// the lobe's peak sits at the apex. A whole Gauss-Kronrod line of tau reaches the lobe at once
+// (Lobe::value_many, integrate/outer_binding.hpp), with the same values as one point at a time.
+class FanIntegrand {
+ public:
+  FanIntegrand(const brdf::Lobe& lobe, const std::vector<FanTriangle>& triangles, const Vector3& normal)
+      : lobe_(lobe), triangles_(triangles), normal_(normal) {}
+
+  std::array<double, 1> operator()(const std::array<double, 2>& x) const {
+    std::array<double, 1> value{};
+    points(x[0], &x[1], 1, value.data());
+    return value;
+  }
+
+  void line(const std::array<double, 2>& x, const double* tau, double* out) const {
+    points(x[0], tau, line_points, out);
+  }
+
+ private:
+  static constexpr std::size_t line_points = integrate::gauss_kronrod::kronrod_size;
+
+  void points(double s_of_fan, const double* tau, std::size_t n, double* out) const {
+    const std::size_t k = std::min(triangles_.size() - 1, static_cast<std::size_t>(s_of_fan));
+    const FanTriangle& t = triangles_[k];
+    const double s = s_of_fan - double(k);
+    std::array<Vector3, line_points> directions;
+    std::array<double, line_points> solid_angle, jacobian, value;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double tau2 = tau[i] * tau[i], t4 = tau2 * tau2;
+      const Vector3 point = t.apex + t4 * (t.from + s * t.edge - t.apex);
+      const double length2 = point.squaredNorm();
+      const double length = std::sqrt(length2);
+      directions[i] = point / length;
+      solid_angle[i] = std::abs(normal_.dot(point)) / (length2 * length);
+      // dA = double_area * t dt ds with t = tau^4: dt = 4 tau^3 dtau.
+      jacobian[i] = t.double_area * t4 * 4.0 * tau2 * tau[i];
+    }
+    lobe_.value_many(std::span(directions.data(), n), std::span(value.data(), n));
+    for (std::size_t i = 0; i < n; ++i) out[i] = value[i] * solid_angle[i] * jacobian[i];
+  }
+
+  const brdf::Lobe& lobe_;
+  const std::vector<FanTriangle>& triangles_;
+  Vector3 normal_;
+};
+
 }  // namespace
 
 std::vector<Quad> random_quads(std::size_t count, std::uint64_t seed) {
@@ -124,20 +173,7 @@ QuadIntegral lobe_quad_integral(const brdf::Lobe& lobe, const Quad& quad, const 
     if (double_area > 1e-14 * edge.squaredNorm()) triangles.push_back({apex, from, edge, double_area});
   }
   if (triangles.empty()) return {};
-  // Triangle k occupies [k, k + 1] x [0, 1] of (s, tau); tiles never straddle two triangles.
-  const auto integrand = [&](const std::array<double, 2>& x) -> std::array<double, 1> {
-    const std::size_t k = std::min(triangles.size() - 1, static_cast<std::size_t>(x[0]));
-    const FanTriangle& t = triangles[k];
-    const double s = x[0] - double(k), tau = x[1];
-    const double tau2 = tau * tau, t4 = tau2 * tau2;
-    const Vector3 point = t.apex + t4 * (t.from + s * t.edge - t.apex);
-    const double length2 = point.squaredNorm();
-    const double length = std::sqrt(length2);
-    const double solid_angle = std::abs(normal.dot(point)) / (length2 * length);
-    // dA = double_area * t dt ds with t = tau^4: dt = 4 tau^3 dtau.
-    const double jacobian = t.double_area * t4 * 4.0 * tau2 * tau;
-    return {lobe.value(point / length) * solid_angle * jacobian};
-  };
+  const FanIntegrand integrand(lobe, triangles, normal);
   std::vector<integrate::Box<2>> tiles;
   const std::size_t split = std::max<std::size_t>(1, options.initial_tiles_per_side);
   const double step = 1.0 / double(split);

@@ -30,6 +30,7 @@ class GgxLobe final : public Lobe {
   Evaluation evaluate(const Vector3& l) const override;
   // evaluate() over many directions as vector code of the process's kernel set (ggx_lobe_batch.hpp).
   void evaluate_many(std::span<const Vector3> l, std::span<Evaluation> out) const override;
+  void value_many(std::span<const Vector3> l, std::span<double> out) const override;
   Vector3 sample(double u1, double u2) const override;
 
  private:

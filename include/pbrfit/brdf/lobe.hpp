@@ -10,8 +10,9 @@
 //  - pdf > 0 wherever value > 0, so importance-sampled estimates of integrals of rho are unbiased;
 //  - sample(u1, u2) returns a unit direction for (u1, u2) in [0, 1)^2 and is deterministic;
 //  - value(l) is evaluate(l).value, possibly cheaper; peak() is where rho is largest when the lobe knows it;
-//  - evaluate_many(l, out) sets out[i] = evaluate(l[i]) bit for bit, for spans of equal length; a lobe may
-//    override it with vector code (arithmetic and sqrt only, which round the same in every kernel set);
+//  - evaluate_many(l, out) sets out[i] = evaluate(l[i]) and value_many(l, out) out[i] = value(l[i]), bit for
+//    bit, for spans of equal length; a lobe may override them with vector code (arithmetic and sqrt only,
+//    which round the same in every kernel set);
 //  - a lobe is immutable once built and may be shared by threads.
 #include <optional>
 #include <span>
@@ -33,6 +34,7 @@ class Lobe {
   virtual void evaluate_many(std::span<const Vector3> l, std::span<Evaluation> out) const;
   virtual Vector3 sample(double u1, double u2) const = 0;
   virtual double value(const Vector3& l) const { return evaluate(l).value; }
+  virtual void value_many(std::span<const Vector3> l, std::span<double> out) const;
   virtual std::optional<Vector3> peak() const { return std::nullopt; }
 
  protected:
