@@ -4,6 +4,7 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "ltc_batch.hpp"
 #include "pbrfit/ltc/clamped_cosine.hpp"
 #include "pbrfit/ltc/polygon_integral.hpp"
 #include "polygon_clipping.hpp"
@@ -37,6 +38,35 @@ LtcDistribution::Transformed LtcDistribution::transform(const Vector3& base) con
   // |M^-1 w| = 1 / |M s| for w = M s / |M s| and a unit s.
   const double pdf = base.z() * std::numbers::inv_pi * inverse_determinant_ * length * length * length;
   return {image / length, pdf};
+}
+
+namespace {
+
+detail::LtcConstants constants_of(const Matrix3& m, const Matrix3& inverse, double inverse_determinant) {
+  detail::LtcConstants c{};
+  for (int r = 0; r < 3; ++r)
+    for (int k = 0; k < 3; ++k) {
+      c.m[3 * r + k] = m(r, k);
+      c.inverse[3 * r + k] = inverse(r, k);
+    }
+  c.inverse_determinant = inverse_determinant;
+  return c;
+}
+
+}  // namespace
+
+void LtcDistribution::transform_many(std::span<const Vector3> base, std::span<Vector3> direction,
+                                     std::span<double> pdf) const {
+  if (base.empty()) return;
+  detail::ltc_batch(active_kernel_set())
+      .transform(constants_of(m_, m_inverse_, inverse_determinant_), base.data(), base.size(), direction.data(),
+                 pdf.data());
+}
+
+void LtcDistribution::pdf_many(std::span<const Vector3> w, std::span<double> pdf) const {
+  if (w.empty()) return;
+  detail::ltc_batch(active_kernel_set())
+      .pdf(constants_of(m_, m_inverse_, inverse_determinant_), w.data(), w.size(), pdf.data());
 }
 
 double LtcDistribution::integrate_polygon(std::span<const Vector3> vertices) const {

@@ -13,22 +13,29 @@ namespace pbrfit::ltc {
 FitErrorEstimator::FitErrorEstimator(std::shared_ptr<const brdf::Lobe> target, std::size_t points)
     : target_(std::move(target)) {
   if (!target_) throw std::invalid_argument("ltc: a fit error needs a target lobe");
-  target_samples_.reserve(points);
+  target_directions_.reserve(points);
   base_.reserve(points);
   for (const auto& [u1, u2] : golden_lattice(points)) {
-    const Vector3 l = target_->sample(u1, u2);
-    const brdf::Lobe::Evaluation evaluation = target_->evaluate(l);
-    target_samples_.push_back({l, evaluation.value, evaluation.pdf});
+    target_directions_.push_back(target_->sample(u1, u2));
     base_.push_back(sample_clamped_cosine(u1, u2));
   }
+  std::vector<brdf::Lobe::Evaluation> evaluations(points);
+  target_->evaluate_many(target_directions_, evaluations);
+  target_values_.reserve(points);
+  target_pdfs_.reserve(points);
+  for (const brdf::Lobe::Evaluation& e : evaluations) {
+    target_values_.push_back(e.value);
+    target_pdfs_.push_back(e.pdf);
+  }
   double squared = 0.0;
-  for (const TargetSample& sample : target_samples_)
-    if (sample.pdf > 0.0) squared += sample.value * sample.value / sample.pdf;
+  for (std::size_t i = 0; i < points; ++i)
+    if (target_pdfs_[i] > 0.0) squared += target_values_[i] * target_values_[i] / target_pdfs_[i];
   target_l2_ = points > 0 ? std::sqrt(squared / static_cast<double>(points)) : 0.0;
 }
 
-// Calls accumulate(difference, pdf_target + pdf_ltc) once per sample of each strategy, in order. The
-// LTC's samples reach the target in groups, through Lobe::evaluate_many (vector code where the lobe has it).
+// Calls accumulate(difference, pdf_target + pdf_ltc) once per sample of each strategy, in order. Both
+// strategies' samples go in groups through the batch members (vector code where the lobe has it, and
+// the LTC's in every kernel set), whose values are those of the scalar members bit for bit.
 template <class Accumulate>
 void FitErrorEstimator::visit(const LtcDistribution& ltc, Accumulate&& accumulate) const {
   const double amplitude = ltc.amplitude();
@@ -38,18 +45,18 @@ void FitErrorEstimator::visit(const LtcDistribution& ltc, Accumulate&& accumulat
   std::array<brdf::Lobe::Evaluation, group> target;
   for (std::size_t first = 0; first < base_.size(); first += group) {
     const std::size_t n = std::min(group, base_.size() - first);
-    for (std::size_t i = 0; i < n; ++i) {
-      const LtcDistribution::Transformed sample = ltc.transform(base_[first + i]);
-      directions[i] = sample.direction;
-      ltc_pdf[i] = sample.pdf;
-    }
+    ltc.transform_many(std::span(base_).subspan(first, n), std::span(directions.data(), n), std::span(ltc_pdf.data(), n));
     target_->evaluate_many({directions.data(), n}, {target.data(), n});
     for (std::size_t i = 0; i < n; ++i)
       accumulate(target[i].value - amplitude * ltc_pdf[i], target[i].pdf + ltc_pdf[i]);
   }
-  for (const TargetSample& sample : target_samples_) {
-    const double pdf = ltc.pdf(sample.direction);
-    accumulate(sample.value - amplitude * pdf, sample.pdf + pdf);
+  for (std::size_t first = 0; first < target_directions_.size(); first += group) {
+    const std::size_t n = std::min(group, target_directions_.size() - first);
+    ltc.pdf_many(std::span(target_directions_).subspan(first, n), std::span(ltc_pdf.data(), n));
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::size_t k = first + i;
+      accumulate(target_values_[k] - amplitude * ltc_pdf[i], target_pdfs_[k] + ltc_pdf[i]);
+    }
   }
 }
 

@@ -36,6 +36,10 @@ class LtcDistribution {
   };
   // For a unit base direction with base.z > 0 (a cosine sample).
   Transformed transform(const Vector3& base) const;
+  // transform() and pdf() over many directions (spans of equal length), bit for bit the same, as vector
+  // code of the process's kernel set.
+  void transform_many(std::span<const Vector3> base, std::span<Vector3> direction, std::span<double> pdf) const;
+  void pdf_many(std::span<const Vector3> w, std::span<double> pdf) const;
 
   // The integral of D over the solid angle a planar polygon subtends (polygon_integral.hpp): the
   // amplitude times the clamped-cosine integral over M^-1 P.

@@ -38,16 +38,13 @@ class FitErrorEstimator {
   double target_l2() const { return target_l2_; }
 
  private:
-  struct TargetSample {
-    Vector3 direction;
-    double value;
-    double pdf;
-  };
   template <class Accumulate>
   void visit(const LtcDistribution& ltc, Accumulate&& accumulate) const;
 
   std::shared_ptr<const brdf::Lobe> target_;
-  std::vector<TargetSample> target_samples_;
+  // The target's samples: directions, rho and the target's density there.
+  std::vector<Vector3> target_directions_;
+  std::vector<double> target_values_, target_pdfs_;
   std::vector<Vector3> base_;  // cosine samples the LTC transforms
   double target_l2_ = 0.0;
 };

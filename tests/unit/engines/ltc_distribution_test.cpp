@@ -2,9 +2,13 @@
 
 #include <array>
 #include <cmath>
+#include <cstring>
+#include <vector>
 #include <numbers>
 
+#include "kernel_set_scope.hpp"
 #include "ltc_sphere_integration.hpp"
+#include "pbrfit/core/kernel_set.hpp"
 #include "pbrfit/core/random_stream.hpp"
 #include "pbrfit/ltc/alignment.hpp"
 #include "pbrfit/ltc/clamped_cosine.hpp"
@@ -111,4 +115,44 @@ TEST_CASE("A singular matrix or a negative amplitude is rejected", "[ltc]") {
   singular(2, 2) = 0.0;
   CHECK_THROWS_AS(LtcDistribution(singular), std::invalid_argument);
   CHECK_THROWS_AS(LtcDistribution(Matrix3::Identity(), -1.0), std::invalid_argument);
+}
+
+// The batch members run as vector code (ltc/ltc_batch.hpp) with the scalar members' arithmetic and sqrt in
+// their order: LTC fits, which estimate their error through them, keep their bits in every kernel set.
+TEST_CASE("LTC transform_many and pdf_many are transform and pdf bit for bit in every kernel set", "[ltc]") {
+  RandomStream random(2026, 12, 7);
+  for (int trial = 0; trial < 20; ++trial) {
+    Matrix3 m;
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c) m(r, c) = (r == c ? 1.0 : 0.0) + (trial == 0 ? 0.0 : 2.0 * random.uniform() - 1.0);
+    const LtcDistribution ltc(m, 0.7);
+    std::vector<Vector3> base, sphere;
+    for (int i = 0; i < 203; ++i) {  // not a multiple of the 16 lanes
+      base.push_back(sample_clamped_cosine(random.uniform(), random.uniform()));
+      const double z = 2.0 * random.uniform() - 1.0, phi = 2.0 * std::numbers::pi * random.uniform();
+      const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
+      sphere.emplace_back(r * std::cos(phi), r * std::sin(phi), z);
+    }
+    sphere.emplace_back(1.0, 0.0, 0.0);
+    for (const pbrfit::KernelSet set : pbrfit::kernel_sets_available()) {
+      const kernel_test::KernelSetScope scope(set);
+      std::vector<Vector3> directions(base.size());
+      std::vector<double> transformed_pdf(base.size()), pdf(sphere.size());
+      ltc.transform_many(base, directions, transformed_pdf);
+      ltc.pdf_many(sphere, pdf);
+      std::size_t differing = 0;
+      for (std::size_t i = 0; i < base.size(); ++i) {
+        const LtcDistribution::Transformed scalar = ltc.transform(base[i]);
+        if (std::memcmp(scalar.direction.data(), directions[i].data(), 3 * sizeof(double)) != 0 ||
+            std::memcmp(&scalar.pdf, &transformed_pdf[i], sizeof(double)) != 0)
+          ++differing;
+      }
+      for (std::size_t i = 0; i < sphere.size(); ++i) {
+        const double scalar = ltc.pdf(sphere[i]);
+        if (std::memcmp(&scalar, &pdf[i], sizeof(double)) != 0) ++differing;
+      }
+      CAPTURE(pbrfit::kernel_set_name(set), trial);
+      CHECK(differing == 0);
+    }
+  }
 }
