@@ -7,21 +7,14 @@
 #include <cmath>
 
 #include "dfg_line.hpp"
+#include "pbrfit/geometry/kernel_lanes.hpp"
 
 namespace pbrfit::brdf::detail::PBRFIT_KERNEL_ISA {
 
 namespace {
 
-// 16 lanes: two AVX-512 packets, four AVX2 ones, eight SSE2 ones; the 16th holds a copy of the 15th node.
-using Lanes = Eigen::Array<double, 16, 1>;
-
-// sqrt as a plain loop, which the compiler turns into the set's exact vector sqrt (Eigen's own may take
-// a faster, approximate path in some sets).
-Lanes square_root(const Lanes& x) {
-  Lanes root;
-  for (int i = 0; i < 16; ++i) root[i] = std::sqrt(x[i]);
-  return root;
-}
+using kernel_lanes::Lanes;
+using kernel_lanes::square_root;
 
 // The visibility's denominator, FixedViewVisibility::denominator over lanes (the same terms in the same order).
 template <SmithVisibility Convention>
@@ -43,7 +36,7 @@ template <SmithVisibility Convention>
 void evaluate(const DfgLine<Convention>& line, const double* s, double* out) {
   Lanes radial;
   for (int i = 0; i < dfg_line_points; ++i) radial[i] = s[i];
-  radial[15] = s[dfg_line_points - 1];
+  radial[15] = s[dfg_line_points - 1];  // the 16th lane repeats the last node
   const Lanes to_horizon = 1.0 - radial;
   const Lanes y = (1.0 - to_horizon * to_horizon) * line.y_max;
   const Lanes exp_y = y.exp();

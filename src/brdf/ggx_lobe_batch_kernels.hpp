@@ -11,30 +11,20 @@
 #include <numbers>
 
 #include "ggx_lobe_batch.hpp"
+#include "pbrfit/geometry/kernel_lanes.hpp"
 
 namespace pbrfit::brdf::detail::PBRFIT_KERNEL_ISA {
 
 namespace {
 
-constexpr std::size_t lanes = 16;
-using Lanes = Eigen::Array<double, lanes, 1>;
-
-// sqrt as a plain loop: the set's exact vector sqrt (Eigen's own may take an approximate path).
-Lanes square_root(const Lanes& x) {
-  Lanes root;
-  for (std::size_t i = 0; i < lanes; ++i) root[i] = std::sqrt(x[i]);
-  return root;
-}
+using kernel_lanes::gather;
+using kernel_lanes::lanes;
+using kernel_lanes::Lanes;
+using kernel_lanes::square_root;
 
 // Up to 16 directions; lanes past n repeat the last direction and are not stored.
 void evaluate_group(const GgxLobeConstants& lobe, const Vector3* l, std::size_t n, Lobe::Evaluation* out) {
-  Lanes x, y, z;
-  for (std::size_t i = 0; i < lanes; ++i) {
-    const Vector3& w = l[std::min(i, n - 1)];
-    x[i] = w.x();
-    y[i] = w.y();
-    z[i] = w.z();
-  }
+  const auto [x, y, z] = gather(l, n);
   const double infinity = std::numeric_limits<double>::infinity();
   const double alpha_squared = lobe.alpha * lobe.alpha;
   // h = normalize(v + l); D(n.h) as ggx_distribution().

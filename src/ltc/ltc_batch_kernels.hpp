@@ -9,36 +9,17 @@
 #include <numbers>
 
 #include "ltc_batch.hpp"
+#include "pbrfit/geometry/kernel_lanes.hpp"
 
 namespace pbrfit::ltc::detail::PBRFIT_KERNEL_ISA {
 
 namespace {
 
-constexpr std::size_t lanes = 16;
-using Lanes = Eigen::Array<double, lanes, 1>;
-
-struct Directions {
-  Lanes x, y, z;
-};
-
-// Up to 16 directions; lanes past n repeat the last one.
-Directions gather(const Vector3* v, std::size_t n) {
-  Directions d;
-  for (std::size_t i = 0; i < lanes; ++i) {
-    const Vector3& w = v[std::min(i, n - 1)];
-    d.x[i] = w.x();
-    d.y[i] = w.y();
-    d.z[i] = w.z();
-  }
-  return d;
-}
-
-// sqrt as a plain loop: the set's exact vector sqrt (Eigen's own may take an approximate path).
-Lanes square_root(const Lanes& x) {
-  Lanes root;
-  for (std::size_t i = 0; i < lanes; ++i) root[i] = std::sqrt(x[i]);
-  return root;
-}
+using kernel_lanes::Directions;
+using kernel_lanes::gather;
+using kernel_lanes::lanes;
+using kernel_lanes::Lanes;
+using kernel_lanes::square_root;
 
 // The matrix m (row-major) times each direction, summed as Eigen 3.4 sums a 3 x 3 product on the generic
 // target: rows 0 and 1 in a packet, (a + b) + c; row 2 by its unrolled reduction, a + (b + c).
