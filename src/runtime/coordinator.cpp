@@ -34,9 +34,11 @@ Outcome Coordinator::run() {
   if (state_.items_done() > 0)
     spdlog::info("resuming: {} of {} work items already done", state_.items_done(), workload_.total_items());
   try {
-    // Readers see this run from its start: until this first publication a resumed job's file still
-    // said how the previous run ended, and a run killed in its first second left it saying so.
-    if (!state_.finished()) persistence_.write_and_publish(store::RunStatus::running, elapsed());
+    // Readers see a resumed run from its start: until this first publication its file still said how
+    // the previous run ended, and a resume killed in its first second left it saying so. (A fresh run
+    // publishes at its first flush; until then `status` reads its checkpoint.)
+    if (!state_.finished() && state_.items_done() > 0)
+      persistence_.write_and_publish(store::RunStatus::running, elapsed());
     while (!state_.finished() && !stopping()) {
       begin_stage();
       run_stage();

@@ -2,7 +2,7 @@
 // Rank 0's side of a run. Per stage it builds the stage context from complete earlier stages, relays it
 // down the tree, and hands out items with their inputs to its own compute threads and to the other ranks
 // (enough per thread that no thread waits for the coordinator). It folds results into the run state and
-// lets Persistence write them; the result file says "running" from the start of the run. It watches every
+// lets Persistence write them; a resumed run's result file says "running" from its start. It watches every
 // rank: one silent for rank_timeout_seconds is lost.
 //
 // Stopping (a signal, a failure or a lost rank, anywhere): the checkpoint is saved first, then work is
