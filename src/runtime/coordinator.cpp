@@ -99,7 +99,7 @@ void Coordinator::run_stage() {
 
 void Coordinator::check_stop_signal() {
   if (!stop_requested() || interrupted_) return;
-  spdlog::warn("{} received: stopping at the next safe point", stop_signal_name());
+  spdlog::warn("{} received: stopping at the next safe point", stop_signal_origin());
   interrupted_ = true;
 }
 

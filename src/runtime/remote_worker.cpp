@@ -30,6 +30,7 @@ class Worker {
   WorkerEnd serve() {
     while (!stopped_ && !coordinator_lost()) {
       if (stop_requested() && !signalled_) {
+        spdlog::warn("{} received: asking rank 0 to stop", stop_signal_origin());
         send(Tag::signalled);
         signalled_ = idle_ = true;
       }

@@ -137,10 +137,22 @@ wait_for_checkpoint() {
       background_running || { trigger_timing "$wanted"; fail "the job had ended when its log showed a checkpoint of $wanted items"; }
       return 0
     fi
-    kill -0 "$BACKGROUND_PID" 2>/dev/null || { tail -n 5 run.log; fail "the job ended before a checkpoint of $wanted items"; }
+    kill -0 "$BACKGROUND_PID" 2>/dev/null || { tail -n 5 run.log; stop_senders; fail "the job ended before a checkpoint of $wanted items"; }
     nap 0.05
   done
   fail "timed out waiting for a checkpoint of $wanted items in run.log"
+}
+
+# The stop signals the ranks logged (with the pid that sent each) and what those processes are, if alive.
+stop_senders() {
+  local line pid
+  echo "this test is process $$; its mpirun ${BACKGROUND_PID:-(none)}; its ranks: $(started_rank_pids)"
+  while IFS= read -r line; do
+    echo "$line"
+    [[ $line =~ from\ process\ ([0-9]+) ]] || continue
+    pid=${BASH_REMATCH[1]}
+    ps -o pid=,ppid=,etimes=,args= -p "$pid" 2>/dev/null || echo "process $pid has gone"
+  done < <(grep -E "received: (stopping|asking)" run.log || true)
 }
 
 # When rank 0 logged the trigger, and its newest line the test had read by then (seconds since its start).
