@@ -75,6 +75,7 @@ void ComputePool::run(Task& task, std::unique_lock<std::mutex>& lock) {
   lock.unlock();
   std::optional<Bytes> result;
   std::string error;
+  const auto started = std::chrono::steady_clock::now();
   try {
     result = workload_.compute(ItemTask{task.id, *task.context, task.input, seed_, &cancelled_});
   } catch (const Cancelled&) {
@@ -82,11 +83,12 @@ void ComputePool::run(Task& task, std::unique_lock<std::mutex>& lock) {
   } catch (const std::exception& e) {
     error = "item " + std::to_string(task.id.item) + " of stage " + std::to_string(task.id.stage) + ": " + e.what();
   }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   const WorkItemId id = task.id;
   task = Task{};  // release the context before reporting
   lock.lock();
   --running_;
-  if (result) finished_.push_back({id, std::move(*result)});
+  if (result) finished_.push_back({id, std::move(*result), seconds});
   if (!error.empty() && !failure_ && !cancelled_) {
     failure_ = std::move(error);
     queue_.clear();

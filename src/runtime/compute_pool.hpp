@@ -24,6 +24,7 @@ namespace pbrfit::runtime {
 struct FinishedItem {
   WorkItemId id;
   Bytes result;
+  double seconds = 0.0;  // how long compute() took (for the log; never part of a result)
 };
 
 class ComputePool {

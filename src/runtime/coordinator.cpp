@@ -42,12 +42,15 @@ Outcome Coordinator::run() {
     while (!state_.finished() && !stopping()) {
       begin_stage();
       run_stage();
-      if (!stopping()) state_.advance();
+      spdlog::debug("{}", load_.stage_summary(workload_.item_count(state_.stage())));
+      if (stopping()) break;
+      state_.advance();
     }
   } catch (const std::exception& e) {
     if (!failure_) failure_ = e.what();
   }
   stop_everything();
+  spdlog::debug("{}", load_.run_summary());
   if (failure_) spdlog::error("job failed: {}", *failure_);
   Outcome outcome = failure_     ? Outcome::failed
                     : lost_rank_ ? Outcome::lost_rank
@@ -74,6 +77,7 @@ void Coordinator::begin_stage() {
   ByteReader in(*message);
   in.get<std::uint32_t>();
   context_ = std::make_shared<const Bytes>(in.get_bytes());
+  load_.begin_stage(stage);
   todo_.clear();
   for (std::uint64_t item = 0; item < workload_.item_count(stage); ++item)
     if (!state_.done(item)) todo_.push_back(item);
@@ -130,7 +134,9 @@ void Coordinator::dispatch() {
       work.put(stage);
       work.put(todo_.front());
       work.put_bytes(workload_.item_input(stage, todo_.front(), state_.kept()));
-      outbox_.send(r, Tag::work, work.take());
+      Bytes payload = work.take();
+      load_.sent_work(payload.size());
+      outbox_.send(r, Tag::work, std::move(payload));
       todo_.pop_front();
       ++sent_[std::size_t(r)];
     }
@@ -140,7 +146,7 @@ void Coordinator::dispatch() {
 bool Coordinator::poll() {
   bool busy = false;
   for (auto& finished : pool_.take_finished()) {
-    accept(finished.id, std::move(finished.result));
+    accept(finished.id, std::move(finished.result), finished.seconds);
     depth_.finished(0);
     busy = true;
   }
@@ -158,8 +164,10 @@ void Coordinator::handle(Message& message) {
   switch (message.tag) {
     case Tag::result: {
       const WorkItemId id{in.get<std::uint32_t>(), in.get<std::uint64_t>()};
+      const auto seconds = in.get<double>();
       --sent_[source];
-      accept(id, in.get_bytes());
+      load_.received_result(message.payload.size());
+      accept(id, in.get_bytes(), seconds);
       depth_.finished(message.source);
       break;
     }
@@ -180,12 +188,13 @@ void Coordinator::handle(Message& message) {
   }
 }
 
-void Coordinator::accept(WorkItemId id, Bytes result) {
+void Coordinator::accept(WorkItemId id, Bytes result, double seconds) {
   if (id.stage != state_.stage())
     throw std::logic_error("a result of stage " + std::to_string(id.stage) + " arrived in stage " +
                            std::to_string(state_.stage()));
   state_.accept(id.item, std::move(result));
   persistence_.finished_one();
+  load_.item_done(seconds);
 }
 
 }  // namespace pbrfit::runtime

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "compute_pool.hpp"
+#include "coordinator_load.hpp"
 #include "dispatch_depth.hpp"
 #include "idle_backoff.hpp"
 #include "messages.hpp"
@@ -49,7 +50,7 @@ class Coordinator {
   void dispatch();
   bool poll();  // true when something arrived
   void handle(Message& message);
-  void accept(WorkItemId id, Bytes result);
+  void accept(WorkItemId id, Bytes result, double seconds);
   void save_before_stopping();
   void stop_everything();
   void collect_until(Clock::time_point deadline);
@@ -79,6 +80,7 @@ class Coordinator {
   std::optional<std::string> failure_;
   std::optional<int> lost_rank_;
   bool interrupted_ = false;
+  CoordinatorLoad load_;
 };
 
 }  // namespace pbrfit::runtime

@@ -35,7 +35,7 @@ void Coordinator::stop_everything() {
   collect_until(Clock::now() + std::chrono::duration_cast<Clock::duration>(grace));
   if (!pool_.idle()) spdlog::warn("waiting for the work items in progress on rank 0 to finish");
   pool_.stop();
-  for (auto& finished : pool_.take_finished()) accept(finished.id, std::move(finished.result));
+  for (auto& finished : pool_.take_finished()) accept(finished.id, std::move(finished.result), finished.seconds);
   for (int r = 1; r < mpi_.size(); ++r)
     if (!said_bye_[std::size_t(r)] && r != lost_rank_)
       spdlog::error("rank {} did not answer within {} s of the stop", r, settings_.stop_grace_seconds);

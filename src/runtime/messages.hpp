@@ -3,7 +3,7 @@
 //   stage     (u32 stage, bytes context)        rank 0 -> tree children; each rank relays it to its own
 //   work      (u32 stage, u64 item, bytes input) rank 0 -> worker
 //   stop                                         rank 0 -> worker: start nothing new, report, say bye
-//   result    (u32 stage, u64 item, bytes)       worker -> rank 0
+//   result    (u32 stage, u64 item, f64 s, bytes) worker -> rank 0 (s: how long computing took)
 //   failed    (text)                             worker -> rank 0: an item threw; the worker idles
 //   signalled                                    worker -> rank 0: the worker got a stop signal
 //   bye                                          worker -> rank 0: nothing more will come

@@ -113,6 +113,7 @@ class Worker {
       ByteWriter out;
       out.put(finished.id.stage);
       out.put(finished.id.item);
+      out.put(finished.seconds);
       out.put_bytes(finished.result);
       send(Tag::result, out.take());
       any = true;
