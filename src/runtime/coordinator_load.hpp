@@ -8,8 +8,8 @@
 // An item's cost is how long its compute() took, reported with its result (a clock read costs tens of
 // nanoseconds; on a core of its own, as mpirun places ranks, that is the processor time it took); the
 // main thread's processor time (thread_clock.hpp) is everything else rank 0 does: MPI, dispatching,
-// folding, files. Measured, never
-// used to decide anything, so no result depends on it. Private to the runtime.
+// folding, files. Measured, never used to decide anything, so no result depends on it. Private to the
+// runtime.
 #include <algorithm>
 #include <chrono>
 #include <cstddef>
