@@ -7,7 +7,7 @@ MPIRUN_FLAGS ?= $(if $(filter 0,$(shell id -u)),--allow-run-as-root,) --oversubs
 
 PREFIX ?= /usr/local
 
-.PHONY: demo test build program install deb web-deps deps bench bench-ltc bench-brdf bench-ebrdf soak clean \
+.PHONY: demo test build program install deb web-deps deps bench bench-ltc bench-brdf bench-ebrdf bench-cluster soak clean \
         test-sanitize test-sanitize-unit fuzz
 
 # Builds only the program (the tests and benchmarks are built by `make test`).
@@ -31,6 +31,12 @@ bench: build
 	tests/benchmarks/runtime_state.sh $(BUILD)/tests/pbrfit_runtime_probe
 	$(BUILD)/tests/bench_optimizers
 	tests/benchmarks/sweep_benchmark.sh $(BUILD)/pbrfit
+
+# Rank 0's rate at 2-16 ranks, every shipped job on 2 ranks (at most 90 s each) and the cluster model's
+# predictions at 64, 256 and 1,024 ranks (about 25 minutes on 2 cores); the machine's peak per core.
+bench-cluster: build
+	tests/benchmarks/cluster_model.sh $(BUILD)
+	$(BUILD)/tests/bench_machine_peak
 
 # LTC tables of every built-in BRDF family, beside the published GGX table and the LTC paper's procedure
 # (about 20 minutes on 2 cores).
