@@ -53,21 +53,20 @@ double best_rate(const std::function<double(long)>& run, double ms) {
 
 volatile double sink = 0.0;
 
-// Keeps the compiler from reasoning about a chain's value (it folded whole loops away): no instruction,
-// the value just has to be in a vector register after every step.
-template <class V>
-inline void opaque(V& v) {
-  asm volatile("" : "+v"(v));
-}
-
 // One kernel per (width, type, operation): V is the register type, L its lanes.
+// opaque(v) keeps the compiler from reasoning about a chain's value (it folded whole loops away): no
+// instruction, the value just has to be in a vector register after every step (declared per set, so the
+// register's width is one the function's target has).
 #define PEAK_KERNELS(target_attr, prefix, V, L, setone, add, mul, fmadd, div, sqrt_, reduce)                  \
+  __attribute__((target(target_attr), always_inline)) inline void prefix##_opaque(V& v) {                     \
+    asm volatile("" : "+v"(v));                                                                              \
+  }                                                                                                          \
   __attribute__((target(target_attr), noinline)) double prefix##_add_mul(long steps) {                       \
     V acc[chains];                                                                                           \
     for (int c = 0; c < chains; ++c) acc[c] = setone(1.0 + 1e-9 * c);                                        \
     const V m = setone(0.9999999), a = setone(1e-7);                                                         \
     for (long s = 0; s < steps; ++s)                                                                         \
-      for (int c = 0; c < chains; ++c) { acc[c] = add(mul(acc[c], m), a); opaque(acc[c]); }                                     \
+      for (int c = 0; c < chains; ++c) { acc[c] = add(mul(acc[c], m), a); prefix##_opaque(acc[c]); }                                     \
     for (int c = 0; c < chains; ++c) sink = sink + reduce(acc[c]);                                           \
     return 2.0 * L * chains * double(steps);                                                                 \
   }                                                                                                          \
@@ -76,7 +75,7 @@ inline void opaque(V& v) {
     for (int c = 0; c < chains; ++c) acc[c] = setone(1.0 + 1e-9 * c);                                        \
     const V m = setone(0.9999999), a = setone(1e-7);                                                         \
     for (long s = 0; s < steps; ++s)                                                                         \
-      for (int c = 0; c < chains; ++c) { acc[c] = fmadd(acc[c], m, a); opaque(acc[c]); }                                         \
+      for (int c = 0; c < chains; ++c) { acc[c] = fmadd(acc[c], m, a); prefix##_opaque(acc[c]); }                                         \
     for (int c = 0; c < chains; ++c) sink = sink + reduce(acc[c]);                                           \
     return 2.0 * L * chains * double(steps);                                                                 \
   }                                                                                                          \
@@ -85,7 +84,7 @@ inline void opaque(V& v) {
     for (int c = 0; c < chains; ++c) acc[c] = setone(1.0 + 1e-9 * c);                                        \
     const V d = setone(1.0000001);                                                                           \
     for (long s = 0; s < steps; ++s)                                                                         \
-      for (int c = 0; c < chains; ++c) { acc[c] = div(acc[c], d); opaque(acc[c]); }                                              \
+      for (int c = 0; c < chains; ++c) { acc[c] = div(acc[c], d); prefix##_opaque(acc[c]); }                                              \
     for (int c = 0; c < chains; ++c) sink = sink + reduce(acc[c]);                                           \
     return double(L) * chains * double(steps);                                                               \
   }                                                                                                          \
@@ -93,7 +92,7 @@ inline void opaque(V& v) {
     V acc[chains];                                                                                           \
     for (int c = 0; c < chains; ++c) acc[c] = setone(2.0 + 1e-9 * c);                                        \
     for (long s = 0; s < steps; ++s)                                                                         \
-      for (int c = 0; c < chains; ++c) { acc[c] = sqrt_(acc[c]); opaque(acc[c]); }                                               \
+      for (int c = 0; c < chains; ++c) { acc[c] = sqrt_(acc[c]); prefix##_opaque(acc[c]); }                                               \
     for (int c = 0; c < chains; ++c) sink = sink + reduce(acc[c]);                                           \
     return double(L) * chains * double(steps);                                                               \
   }
