@@ -7,7 +7,7 @@
 //               B' bytes), main thread T s of processor time, U us per item"
 // An item's cost is how long its compute() took, reported with its result (a clock read costs tens of
 // nanoseconds; on a core of its own, as mpirun places ranks, that is the processor time it took); the
-// main thread's processor time (thread_clock.hpp) is everything else rank 0 does: MPI, dispatching,
+// main thread's processor time (thread_cpu_seconds) is everything else rank 0 does: MPI, dispatching,
 // folding, files. Measured, never used to decide anything, so no result depends on it. Private to the
 // runtime.
 #include <algorithm>
@@ -17,9 +17,17 @@
 #include <cstdio>
 #include <string>
 
-#include "thread_clock.hpp"
+#include <time.h>
 
 namespace pbrfit::runtime {
+
+// The processor time the calling thread has used, in seconds: what coordinating cost the main thread,
+// however many other processes share its core. A system call, not a vDSO read: once a run.
+inline double thread_cpu_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+}
 
 class CoordinatorLoad {
  public:
