@@ -23,6 +23,16 @@ std::size_t ComputePool::outstanding() const {
   return queue_.size() + running_ + finished_.size();
 }
 
+std::size_t ComputePool::queued() const {
+  std::lock_guard lock(mutex_);
+  return queue_.size();
+}
+
+std::size_t ComputePool::finished() const {
+  std::lock_guard lock(mutex_);
+  return finished_.size();
+}
+
 std::vector<FinishedItem> ComputePool::take_finished() {
   std::lock_guard lock(mutex_);
   return std::exchange(finished_, {});
@@ -34,6 +44,10 @@ std::optional<std::string> ComputePool::failure() const {
 }
 
 void ComputePool::wait(std::chrono::microseconds timeout) {
+  if (timeout.count() <= 0) {
+    std::this_thread::yield();
+    return;
+  }
   std::unique_lock lock(mutex_);
   item_done_.wait_for(lock, timeout, [this] { return !finished_.empty() || failure_; });
 }

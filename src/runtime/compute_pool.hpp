@@ -36,11 +36,15 @@ class ComputePool {
 
   void assign(WorkItemId id, std::shared_ptr<const Bytes> context, Bytes input);
   std::size_t outstanding() const;
+  // Items assigned and not started yet; results finished and not taken yet.
+  std::size_t queued() const;
+  std::size_t finished() const;
   int threads() const { return int(threads_.size()); }
   std::vector<FinishedItem> take_finished();
   // The first failure ("item N of stage S: what"); after one, queued items are dropped.
   std::optional<std::string> failure() const;
-  // Returns when an item finished or failed, or after `timeout`.
+  // Returns when an item finished or failed, or after `timeout`; a timeout of zero yields the processor
+  // once and returns.
   void wait(std::chrono::microseconds timeout);
   // Drops queued items and raises the cancel flag for running ones (which may finish or give up); new
   // items are refused from now on. Returns at once.

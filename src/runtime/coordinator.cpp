@@ -96,7 +96,7 @@ void Coordinator::run_stage() {
     outbox_.progress();
     persistence_.tick(elapsed());
     progress_.maybe_log(state_);
-    const auto pause = backoff_.next(busy);
+    const auto pause = backoff_.next(busy, pool_.outstanding() == 0);
     if (!busy) pool_.wait(pause);
   }
 }
@@ -128,17 +128,23 @@ void Coordinator::dispatch() {
     pool_.assign({stage, todo_.front()}, context_, workload_.item_input(stage, todo_.front(), state_.kept()));
     todo_.pop_front();
   }
+  // What a rank lacks goes in one message (or a few, when inputs are large).
   for (int r = 1; r < mpi_.size(); ++r) {
-    while (!todo_.empty() && sent_[std::size_t(r)] < depth_.for_rank(r, todo_.size())) {
+    auto& sent = sent_[std::size_t(r)];
+    while (!todo_.empty() && sent < depth_.for_rank(r, todo_.size())) {
       ByteWriter work;
       work.put(stage);
-      work.put(todo_.front());
-      work.put_bytes(workload_.item_input(stage, todo_.front(), state_.kept()));
+      std::size_t items = 0;
+      while (!todo_.empty() && sent < depth_.for_rank(r, todo_.size()) && work.bytes().size() < batch_bytes) {
+        work.put(todo_.front());
+        work.put_bytes(workload_.item_input(stage, todo_.front(), state_.kept()));
+        todo_.pop_front();
+        ++sent;
+        ++items;
+      }
       Bytes payload = work.take();
-      load_.sent_work(payload.size());
+      load_.sent_work(payload.size(), items);
       outbox_.send(r, Tag::work, std::move(payload));
-      todo_.pop_front();
-      ++sent_[std::size_t(r)];
     }
   }
 }
@@ -163,12 +169,17 @@ void Coordinator::handle(Message& message) {
   peers_.heard(message.source);
   switch (message.tag) {
     case Tag::result: {
-      const WorkItemId id{in.get<std::uint32_t>(), in.get<std::uint64_t>()};
-      const auto seconds = in.get<double>();
-      --sent_[source];
-      load_.received_result(message.payload.size());
-      accept(id, in.get_bytes(), seconds);
-      depth_.finished(message.source);
+      std::size_t items = 0;
+      while (in.remaining() > 0) {
+        const WorkItemId id{in.get<std::uint32_t>(), in.get<std::uint64_t>()};
+        const auto seconds = in.get<double>();
+        if (sent_[source] == 0) throw RunError("rank " + std::to_string(message.source) + " sent a result it was not asked for");
+        --sent_[source];
+        accept(id, in.get_bytes(), seconds);
+        depth_.finished(message.source);
+        ++items;
+      }
+      load_.received_results(message.payload.size(), items);
       break;
     }
     case Tag::failed:

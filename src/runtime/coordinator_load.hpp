@@ -3,8 +3,8 @@
 // (docs/BENCHMARKS.md, "Scale past one machine"; tests/benchmarks/cluster_model.py reads these lines):
 //   per stage: "stage S: N items in W s; computing 7.1 ms an item on average, longest 9.8 ms", ending
 //              "(of the stage's M)" when this run did fewer than all M (stopped, or resumed within it)
-//   per run:   "coordinator: N items (R from other ranks; work messages of B bytes on average, results of
-//               B' bytes), main thread T s of processor time, U us per item"
+//   per run:   "coordinator: N items (R from other ranks; W work messages of B bytes and I items on average,
+//               M result messages of B' bytes and I' items), main thread T s of processor time, U us per item"
 // An item's cost is how long its compute() took, reported with its result (a clock read costs tens of
 // nanoseconds; on a core of its own, as mpirun places ranks, that is the processor time it took); the
 // main thread's processor time (thread_cpu_seconds) is everything else rank 0 does: MPI, dispatching,
@@ -33,13 +33,15 @@ class CoordinatorLoad {
  public:
   using Clock = std::chrono::steady_clock;
 
-  void sent_work(std::size_t bytes) {
+  void sent_work(std::size_t bytes, std::size_t items) {
     ++work_messages_;
     work_bytes_ += bytes;
+    items_sent_ += items;
   }
-  void received_result(std::size_t bytes) {
+  void received_results(std::size_t bytes, std::size_t items) {
     ++result_messages_;
     result_bytes_ += bytes;
+    items_received_ += items;
   }
   void begin_stage(std::uint32_t stage) {
     stage_ = stage;
@@ -68,12 +70,15 @@ class CoordinatorLoad {
 
   std::string run_summary() const {
     const double cpu = thread_cpu_seconds() - cpu_started_;
-    char text[300];
+    char text[400];
     std::snprintf(text, sizeof text,
-                  "coordinator: %llu items (%llu from other ranks; work messages of %.0f bytes on average, results of "
-                  "%.0f bytes), main thread %.3f s of processor time, %.1f us per item",
-                  static_cast<unsigned long long>(items_), static_cast<unsigned long long>(result_messages_),
-                  mean(work_bytes_, work_messages_), mean(result_bytes_, result_messages_), cpu,
+                  "coordinator: %llu items (%llu from other ranks; %llu work messages of %.0f bytes and %.1f items "
+                  "on average, %llu result messages of %.0f bytes and %.1f items), main thread %.3f s of processor "
+                  "time, %.2f us per item",
+                  static_cast<unsigned long long>(items_), static_cast<unsigned long long>(items_received_),
+                  static_cast<unsigned long long>(work_messages_), mean(work_bytes_, work_messages_),
+                  mean(items_sent_, work_messages_), static_cast<unsigned long long>(result_messages_),
+                  mean(result_bytes_, result_messages_), mean(items_received_, result_messages_), cpu,
                   items_ > 0 ? 1e6 * cpu / double(items_) : 0.0);
     return text;
   }
@@ -83,6 +88,7 @@ class CoordinatorLoad {
 
   double cpu_started_ = thread_cpu_seconds();
   std::uint64_t items_ = 0, work_messages_ = 0, result_messages_ = 0, work_bytes_ = 0, result_bytes_ = 0;
+  std::uint64_t items_sent_ = 0, items_received_ = 0;
   std::uint32_t stage_ = 0;
   std::uint64_t stage_items_ = 0;
   double stage_seconds_ = 0.0, stage_longest_ = 0.0;

@@ -8,6 +8,7 @@ namespace pbrfit::runtime {
 namespace {
 
 constexpr double covered_delay = 0.010;  // seconds
+constexpr double window_seconds = 0.1;
 constexpr std::size_t max_reserve = 1024;
 
 }  // namespace
@@ -20,7 +21,7 @@ DispatchDepth::DispatchDepth(std::vector<int> threads)
 
 void DispatchDepth::update(Clock::time_point now) {
   const double seconds = std::chrono::duration<double>(now - window_start_).count();
-  if (seconds < 0.5) return;
+  if (seconds < window_seconds) return;
   total_depth_ = 0;
   for (std::size_t r = 0; r < rate_.size(); ++r) {
     rate_[r] = 0.5 * rate_[r] + 0.5 * double(finished_[r]) / seconds;

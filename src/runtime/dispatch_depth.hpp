@@ -16,7 +16,7 @@ class DispatchDepth {
   explicit DispatchDepth(std::vector<int> threads);
 
   void finished(int rank) { ++finished_[std::size_t(rank)]; }
-  // Measures each rank's rate over half-second windows (smoothed) and sets the reserves from it.
+  // Measures each rank's rate over windows of a tenth of a second (smoothed) and sets the reserves from it.
   void update(Clock::time_point now);
   std::size_t for_rank(int rank, std::size_t items_left) const;
 

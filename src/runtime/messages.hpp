@@ -1,9 +1,12 @@
 #pragma once
 // The coordinator/worker protocol, point to point on MPI_COMM_WORLD. Private to the runtime.
 //   stage     (u32 stage, bytes context)        rank 0 -> tree children; each rank relays it to its own
-//   work      (u32 stage, u64 item, bytes input) rank 0 -> worker
+//   work      (u32 stage, then (u64 item, bytes input) to the end)
+//                                                rank 0 -> worker: one or more items of one stage
 //   stop                                         rank 0 -> worker: start nothing new, report, say bye
-//   result    (u32 stage, u64 item, f64 s, bytes) worker -> rank 0 (s: how long computing took)
+//   result    ((u32 stage, u64 item, f64 s, bytes) to the end)
+//                                                worker -> rank 0: one or more results (s: how long
+//                                                computing took)
 //   failed    (text)                             worker -> rank 0: an item threw; the worker idles
 //   signalled                                    worker -> rank 0: the worker got a stop signal
 //   bye                                          worker -> rank 0: nothing more will come
@@ -11,6 +14,8 @@
 //   heartbeat                                    either way, when nothing else was sent for a second
 // Messages from one sender to one receiver arrive in order, so every result a worker sent before `bye`
 // has been received once `bye` is. Sends never block: an Outbox keeps each payload until MPI is done.
+// Work and results travel in batches: what one side has ready for the other goes in one message (up to
+// batch_bytes, then another), so rank 0's cost per item is not a message's cost when items are short.
 #include <mpi.h>
 
 #include <chrono>
@@ -21,6 +26,9 @@
 #include "pbrfit/core/bytes.hpp"
 
 namespace pbrfit::runtime {
+
+// A batch grows past this size only by its first entry.
+inline constexpr std::size_t batch_bytes = std::size_t(1) << 20;
 
 enum class Tag : int { stage = 1, work, stop, result, failed, signalled, bye, farewell, heartbeat };
 

@@ -4,6 +4,7 @@
 
 #include <deque>
 #include <memory>
+#include <optional>
 
 #include "compute_pool.hpp"
 #include "idle_backoff.hpp"
@@ -16,6 +17,10 @@
 namespace pbrfit::runtime {
 
 namespace {
+
+// How long finished results may wait for company while the rank has work queued (dispatch_depth.hpp keeps
+// a reserve of 10 ms of items at a rank, so a thread does not run dry meanwhile).
+constexpr std::chrono::milliseconds result_hold{2};
 
 struct Assignment {
   WorkItemId id;
@@ -35,9 +40,9 @@ class Worker {
         signalled_ = idle_ = true;
       }
       const bool received = receive_all();
-      const bool sent = send_finished();
+      const bool sent = send_finished(false);
       keep_alive();
-      const auto pause = backoff_.next(received || sent);
+      const auto pause = backoff_.next(received || sent, pool_.outstanding() == 0);
       if (!received && !sent) pool_.wait(pause);
     }
     if (stopped_) return await_farewell();
@@ -79,8 +84,11 @@ class Worker {
       context_ = std::make_shared<const Bytes>(header.get_bytes());
       start_waiting();
     } else if (message.tag == Tag::work) {
-      Assignment a{{in.get<std::uint32_t>(), in.get<std::uint64_t>()}, in.get_bytes()};
-      waiting_.push_back(std::move(a));
+      const auto stage = in.get<std::uint32_t>();
+      while (in.remaining() > 0) {
+        const auto item = in.get<std::uint64_t>();
+        waiting_.push_back({{stage, item}, in.get_bytes()});
+      }
       start_waiting();
     } else if (message.tag == Tag::stop) {
       finish_in_grace();
@@ -104,20 +112,27 @@ class Worker {
     const auto deadline =
         std::chrono::steady_clock::now() + std::chrono::duration_cast<std::chrono::steady_clock::duration>(grace);
     while (!pool_.idle() && std::chrono::steady_clock::now() < deadline) pool_.wait(std::chrono::milliseconds(1));
-    send_finished();
+    send_finished(true);
   }
 
-  bool send_finished() {
+  // Finished results go to rank 0 in as few messages as batch_bytes allows. They may wait up to
+  // result_hold while every thread has another item queued, so that short items share a message and
+  // rank 0 handles fewer of them; once a thread could run out, they go at once (the end of a stage
+  // never waits). `now`: send whatever there is.
+  bool send_finished(bool now) {
+    if (!now && holding()) return false;
     bool any = false;
+    held_since_.reset();
+    ByteWriter out;
     for (auto& finished : pool_.take_finished()) {
-      ByteWriter out;
       out.put(finished.id.stage);
       out.put(finished.id.item);
       out.put(finished.seconds);
       out.put_bytes(finished.result);
-      send(Tag::result, out.take());
+      if (out.bytes().size() >= batch_bytes) send(Tag::result, out.take());
       any = true;
     }
+    if (!out.bytes().empty()) send(Tag::result, out.take());
     if (auto failure = pool_.failure(); failure && !reported_failure_) {
       ByteWriter out;
       out.put_string(*failure);
@@ -125,6 +140,14 @@ class Worker {
       reported_failure_ = idle_ = true;
     }
     return any;
+  }
+
+  bool holding() {
+    if (pool_.finished() == 0) return false;
+    if (pool_.queued() < std::size_t(pool_.threads())) return false;
+    const auto now = std::chrono::steady_clock::now();
+    if (!held_since_) held_since_ = now;
+    return now - *held_since_ < result_hold;
   }
 
   WorkerEnd await_farewell() {
@@ -138,7 +161,7 @@ class Worker {
         }
         continue;  // late work or stages: nothing more is computed
       }
-      pool_.wait(backoff_.next(false));
+      pool_.wait(backoff_.next(false, pool_.outstanding() == 0));
     }
     return give_up();
   }
@@ -159,6 +182,7 @@ class Worker {
   std::uint32_t stage_ = 0;
   std::shared_ptr<const Bytes> context_;
   std::deque<Assignment> waiting_;
+  std::optional<std::chrono::steady_clock::time_point> held_since_;  // when results began to wait
   bool signalled_ = false, idle_ = false, reported_failure_ = false, stopped_ = false;
 };
 
