@@ -18,9 +18,12 @@ namespace pbrfit::runtime {
 
 namespace {
 
-// How long finished results may wait for company while the rank has work queued (dispatch_depth.hpp keeps
-// a reserve of 10 ms of items at a rank, so a thread does not run dry meanwhile).
+// How long finished results of short items may wait for company while the rank has work queued
+// (dispatch_depth.hpp keeps a reserve of 10 ms of items at a rank, so a thread does not run dry meanwhile).
+// Items are short when those last sent took under half of it on average: longer ones would rarely find
+// company, and waiting would only delay rank 0's view of the rank.
 constexpr std::chrono::milliseconds result_hold{2};
+constexpr double short_item_seconds = 0.5 * 1e-3 * double(result_hold.count());
 
 struct Assignment {
   WorkItemId id;
@@ -115,8 +118,8 @@ class Worker {
     send_finished(true);
   }
 
-  // Finished results go to rank 0 in as few messages as batch_bytes allows. They may wait up to
-  // result_hold while every thread has another item queued, so that short items share a message and
+  // Finished results go to rank 0 in as few messages as batch_bytes allows. Results of short items may
+  // wait up to result_hold while every thread has another item queued, so that they share a message and
   // rank 0 handles fewer of them; once a thread could run out, they go at once (the end of a stage
   // never waits). `now`: send whatever there is.
   bool send_finished(bool now) {
@@ -124,7 +127,13 @@ class Worker {
     bool any = false;
     held_since_.reset();
     ByteWriter out;
-    for (auto& finished : pool_.take_finished()) {
+    auto results = pool_.take_finished();
+    if (!results.empty()) {
+      double seconds = 0.0;
+      for (const auto& finished : results) seconds += finished.seconds;
+      recent_item_seconds_ = seconds / double(results.size());
+    }
+    for (auto& finished : results) {
       out.put(finished.id.stage);
       out.put(finished.id.item);
       out.put(finished.seconds);
@@ -143,7 +152,7 @@ class Worker {
   }
 
   bool holding() {
-    if (pool_.finished() == 0) return false;
+    if (recent_item_seconds_ >= short_item_seconds || pool_.finished() == 0) return false;
     if (pool_.queued() < std::size_t(pool_.threads())) return false;
     const auto now = std::chrono::steady_clock::now();
     if (!held_since_) held_since_ = now;
@@ -183,6 +192,7 @@ class Worker {
   std::shared_ptr<const Bytes> context_;
   std::deque<Assignment> waiting_;
   std::optional<std::chrono::steady_clock::time_point> held_since_;  // when results began to wait
+  double recent_item_seconds_ = 1e300;  // the mean compute time of the results sent last (none yet: long)
   bool signalled_ = false, idle_ = false, reported_failure_ = false, stopped_ = false;
 };
 
