@@ -43,13 +43,13 @@ std::optional<std::string> ComputePool::failure() const {
   return failure_;
 }
 
-void ComputePool::wait(std::chrono::microseconds timeout) {
+void ComputePool::wait(std::chrono::microseconds timeout, std::size_t held) {
   if (timeout.count() <= 0) {
     std::this_thread::yield();
     return;
   }
   std::unique_lock lock(mutex_);
-  item_done_.wait_for(lock, timeout, [this] { return !finished_.empty() || failure_; });
+  item_done_.wait_for(lock, timeout, [&] { return finished_.size() > held || failure_; });
 }
 
 void ComputePool::cancel() {

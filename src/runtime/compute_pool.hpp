@@ -43,9 +43,10 @@ class ComputePool {
   std::vector<FinishedItem> take_finished();
   // The first failure ("item N of stage S: what"); after one, queued items are dropped.
   std::optional<std::string> failure() const;
-  // Returns when an item finished or failed, or after `timeout`; a timeout of zero yields the processor
-  // once and returns.
-  void wait(std::chrono::microseconds timeout);
+  // Returns when more than `held` results wait to be taken or an item failed, or after `timeout` (a caller
+  // holding results back passes their number, so that it sleeps rather than spins); a timeout of zero
+  // yields the processor once and returns.
+  void wait(std::chrono::microseconds timeout, std::size_t held = 0);
   // Drops queued items and raises the cancel flag for running ones (which may finish or give up); new
   // items are refused from now on. Returns at once.
   void cancel();

@@ -46,7 +46,7 @@ class Worker {
       const bool sent = send_finished(false);
       keep_alive();
       const auto pause = backoff_.next(received || sent, pool_.outstanding() == 0);
-      if (!received && !sent) pool_.wait(pause);
+      if (!received && !sent) pool_.wait(pause, held_since_ ? pool_.finished() : 0);
     }
     if (stopped_) return await_farewell();
     return give_up();
