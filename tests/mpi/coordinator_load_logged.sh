@@ -55,7 +55,9 @@ pattern="coordinator: 100000 items \(([0-9]+) from other ranks; ([0-9]+) work me
 [[ $line =~ $pattern ]] || fail "coordinator line not as expected: $line"
 remote=${BASH_REMATCH[1]} per_work=${BASH_REMATCH[4]} per_result=${BASH_REMATCH[8]}
 echo "$remote items from rank 1: $per_work items a work message, $per_result a result message"
-# One item a message was the protocol before batching; rank 0 keeps hundreds out at a rank this fast.
-awk -v w="$per_work" -v r="$per_result" 'BEGIN { exit !(w >= 4 && r >= 2) }' ||
+# One item a message was the protocol before batching. How many share one depends on how fast rank 0 is
+# against the worker (6-10 in the Release build, 3 under AddressSanitizer, where rank 0 is 50 times slower
+# and computes most items itself); more than 1.5 on average only comes from batches.
+awk -v w="$per_work" -v r="$per_result" 'BEGIN { exit !(w >= 1.5 && r >= 1.5) }' ||
   fail "work and results do not travel in batches: $line"
 echo "PASS"
