@@ -1,5 +1,7 @@
 # Shared helpers of the end-to-end tests. Each test runs in its own temporary directory.
-# Environment (set by ctest): PBRFIT (the binary), PBRFIT_SOURCE_DIR, MPIEXEC.
+# Environment (set by ctest): PBRFIT (the binary), PBRFIT_SOURCE_DIR, MPIEXEC, and PBRFIT_TEST_SLOWDOWN: how
+# many times slower the build runs than a Release build (5 under the sanitizers, tests/CMakeLists.txt),
+# which stretches the waits for a job's progress below.
 set -euo pipefail
 
 : "${PBRFIT:?PBRFIT must name the pbrfit binary}"
@@ -8,6 +10,7 @@ MPIEXEC=${MPIEXEC:-mpirun}
 MPI_FLAGS=(--oversubscribe --mca pml ob1 --mca btl self,vader)
 [[ $(id -u) -eq 0 ]] && MPI_FLAGS+=(--allow-run-as-root)
 H5PY_PYTHON=/usr/bin/python3   # Debian's h5py is installed for the system interpreter
+PROGRESS_WAIT=$((120 * ${PBRFIT_TEST_SLOWDOWN:-1}))   # seconds a wait for a job's progress may take
 
 WORK=$(mktemp -d "${TMPDIR:-/tmp}/pbrfit-test.XXXXXX")
 trap 'kill_group_if_running; rm -rf "$WORK"' EXIT
@@ -96,14 +99,14 @@ kill_session() {
 
 # Waits until the result file reports at least N finished items (while the job runs).
 wait_for_items() {
-  local file=$1 wanted=$2 deadline=$((SECONDS + 120)) done
+  local file=$1 wanted=$2 deadline=$((SECONDS + PROGRESS_WAIT)) done
   while (( SECONDS < deadline )); do
     done=$("$PBRFIT" status "$file" 2>/dev/null | sed -n 's/^progress: *\([0-9]*\) of.*/\1/p' || true)
     if [[ -n "$done" ]] && (( done >= wanted )); then return 0; fi
     background_running || fail "the job ended before $wanted items were done"
     sleep 0.1
   done
-  fail "timed out waiting for $wanted items in $file"
+  fail "timed out waiting for $wanted items in $file ($PROGRESS_WAIT s)"
 }
 
 # Sleeps without starting a process: a read that times out on a FIFO nobody writes to.
@@ -120,7 +123,7 @@ nap() {
 # file that `pbrfit status` reads may lag by many seconds on a slow disk (publication gives copying at
 # most 5 % of the time): a short job can end before its published progress reaches N.
 wait_for_checkpoint() {
-  local wanted=$1 deadline=$((SECONDS + 120)) saved=0 line partial="" log
+  local wanted=$1 deadline=$((SECONDS + PROGRESS_WAIT)) saved=0 line partial="" log
   TRIGGER_STAMP="" NEWEST_STAMP=""
   exec {log}<run.log   # read as it grows, with builtins only: a loaded machine delays every fork
   while (( SECONDS < deadline )); do
@@ -140,7 +143,7 @@ wait_for_checkpoint() {
     kill -0 "$BACKGROUND_PID" 2>/dev/null || { tail -n 5 run.log; stop_senders; fail "the job ended before a checkpoint of $wanted items"; }
     nap 0.05
   done
-  fail "timed out waiting for a checkpoint of $wanted items in run.log"
+  fail "timed out waiting for a checkpoint of $wanted items in run.log ($PROGRESS_WAIT s)"
 }
 
 # The stop signals the ranks logged (with the pid that sent each) and what those processes are, if alive.
