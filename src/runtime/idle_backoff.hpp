@@ -21,8 +21,7 @@ class IdleBackoff {
   using Clock = std::chrono::steady_clock;
 
   // A pause of zero means: poll again at once (ComputePool::wait yields the processor for it).
-  std::chrono::microseconds next(bool busy, bool nothing_running) {
-    const auto now = Clock::now();
+  std::chrono::microseconds next(bool busy, bool nothing_running, Clock::time_point now = Clock::now()) {
     if (busy) {
       last_busy_ = now;
       pause_ = shortest;

@@ -3,7 +3,6 @@
 #include <catch2/catch_test_macros.hpp>
 
 #include <chrono>
-#include <thread>
 
 #include "idle_backoff.hpp"
 
@@ -22,10 +21,12 @@ TEST_CASE("idle backoff: pauses grow from 250 us to 1 ms while compute threads r
 
 TEST_CASE("idle backoff: a rank with nothing running polls without sleeping, for a millisecond at most", "[runtime]") {
   IdleBackoff backoff;
-  CHECK(backoff.next(true, true) == 0us);
-  CHECK(backoff.next(false, true) == 0us);  // just after activity: the next message is probably near
-  std::this_thread::sleep_for(2ms);
-  CHECK(backoff.next(false, true) == 250us);  // the spin is over: sleeping pauses as usual
-  CHECK(backoff.next(false, true) == 500us);
-  CHECK(backoff.next(true, true) == 0us);  // activity starts a new spin
+  const auto t = IdleBackoff::Clock::now();
+  CHECK(backoff.next(true, true, t) == 0us);
+  CHECK(backoff.next(false, true, t + 999us) == 0us);  // just after activity: the next message is probably near
+  CHECK(backoff.next(false, true, t + 1000us) == 250us);  // the spin is over: sleeping pauses as usual
+  CHECK(backoff.next(false, true, t + 1300us) == 500us);
+  CHECK(backoff.next(false, false, t + 1400us) == 1000us);  // something runs here: no spin at all
+  CHECK(backoff.next(true, true, t + 5000us) == 0us);  // activity starts a new spin
+  CHECK(backoff.next(false, true, t + 5500us) == 0us);
 }
