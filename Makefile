@@ -31,6 +31,8 @@ bench: build
 	tests/benchmarks/runtime_state.sh $(BUILD)/tests/pbrfit_runtime_probe
 	$(BUILD)/tests/bench_optimizers
 	tests/benchmarks/sweep_benchmark.sh $(BUILD)/pbrfit
+	tests/benchmarks/symreg_benchmark.sh $(BUILD)/pbrfit
+	tests/benchmarks/symreg_heldout.sh $(BUILD)/pbrfit
 
 # Rank 0's rate at 2-16 ranks, every shipped job on 2 ranks (at most 90 s each) and the cluster model's
 # predictions at 64, 256 and 1,024 ranks (about 25 minutes on 2 cores); the machine's peak per core.
