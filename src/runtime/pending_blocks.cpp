@@ -7,6 +7,14 @@ void PendingBlocks::add(const store::BlockCodec& codec, const store::Block& bloc
   ++count_;
 }
 
+void PendingBlocks::add_to_both(const store::BlockCodec& codec, const store::Block& block, PendingBlocks& a,
+                                PendingBlocks& b) {
+  const std::size_t from = a.out_.bytes().size();
+  a.add(codec, block);
+  b.out_.put_raw(std::span<const std::byte>(a.out_.bytes()).subspan(from));
+  ++b.count_;
+}
+
 std::vector<store::Block> PendingBlocks::decode(const store::BlockCodec& codec) const {
   std::vector<store::Block> blocks;
   blocks.reserve(count_);

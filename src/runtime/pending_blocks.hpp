@@ -12,6 +12,8 @@ namespace pbrfit::runtime {
 class PendingBlocks {
  public:
   void add(const store::BlockCodec& codec, const store::Block& block);
+  // Adds `block` to both, encoded and checked once (the unflushed and the unjournaled blocks).
+  static void add_to_both(const store::BlockCodec& codec, const store::Block& block, PendingBlocks& a, PendingBlocks& b);
   std::uint64_t count() const { return count_; }
   const Bytes& bytes() const { return out_.bytes(); }
   std::vector<store::Block> decode(const store::BlockCodec& codec) const;

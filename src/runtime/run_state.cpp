@@ -49,8 +49,7 @@ void RunState::add_blocks(const std::vector<store::Block>& blocks, Bytes& append
       codec_.encode(growing, block);
       ++growing_count;
     } else {
-      unflushed_.add(codec_, block);
-      unjournaled_.add(codec_, block);
+      PendingBlocks::add_to_both(codec_, block, unflushed_, unjournaled_);
     }
   }
   if (growing_count == 0) return;
@@ -85,8 +84,7 @@ void RunState::place_growing_rows() {
       const std::uint32_t slot = growing_slot_[codec_.tables().find(block.group, block.table)];
       used[slot] = std::max(used[slot], block.offset[0] + block.count[0]);
       block.offset[0] += rows_[slot];
-      unflushed_.add(codec_, block);
-      unjournaled_.add(codec_, block);
+      PendingBlocks::add_to_both(codec_, block, unflushed_, unjournaled_);
     }
     for (std::size_t s = 0; s < rows_.size(); ++s) rows_[s] += used[s];
   }

@@ -1,6 +1,7 @@
 #include "block_merge.hpp"
 
 #include <algorithm>
+#include <numeric>
 
 namespace pbrfit::store {
 
@@ -27,28 +28,38 @@ bool continues_rows(const Block& a, const Block& b, const std::vector<std::uint6
   return b.offset[0] == a.offset[0] + a.count[0];
 }
 
-std::vector<Block> merge_pass(std::vector<Block> blocks, bool rows, const std::vector<std::uint64_t>& extent) {
-  std::vector<Block> out;
-  for (auto& block : blocks) {
-    if (!out.empty()) {
-      Block& last = out.back();
-      if (rows ? continues_rows(last, block, extent) : continues_line(last, block)) {
-        append_values(last, block, rows ? 0 : last.count.size() - 1);
-        continue;
-      }
-    }
-    out.push_back(std::move(block));
+// Merges, in place, each block into the one before it where `rows` (else a line) continues it.
+void merge_pass(std::vector<Block>& blocks, bool rows, const std::vector<std::uint64_t>& extent) {
+  std::size_t kept = 0;
+  for (std::size_t i = 1; i < blocks.size(); ++i) {
+    Block& last = blocks[kept];
+    if (rows ? continues_rows(last, blocks[i], extent) : continues_line(last, blocks[i]))
+      append_values(last, blocks[i], rows ? 0 : last.count.size() - 1);
+    else if (++kept != i)
+      blocks[kept] = std::move(blocks[i]);
   }
-  return out;
+  blocks.resize(kept + 1);
 }
 
 }  // namespace
 
 std::vector<Block> merge_touching_blocks(std::vector<Block> blocks, const std::vector<std::uint64_t>& extent) {
   if (blocks.size() < 2 || blocks.front().count.empty()) return blocks;
-  // Stable: of two blocks at one offset, the later stays later and so is written last.
-  std::stable_sort(blocks.begin(), blocks.end(), [](const Block& a, const Block& b) { return a.offset < b.offset; });
-  return merge_pass(merge_pass(std::move(blocks), false, extent), true, extent);
+  // Stable: of two blocks at one offset, the later stays later and so is written last. The order is found
+  // on indices, so each block moves at most once, and not at all when the blocks came in order.
+  const auto by_offset = [&](std::uint32_t a, std::uint32_t b) { return blocks[a].offset < blocks[b].offset; };
+  std::vector<std::uint32_t> order(blocks.size());
+  std::iota(order.begin(), order.end(), std::uint32_t{0});
+  if (!std::is_sorted(order.begin(), order.end(), by_offset)) {
+    std::stable_sort(order.begin(), order.end(), by_offset);
+    std::vector<Block> sorted;
+    sorted.reserve(blocks.size());
+    for (const auto i : order) sorted.push_back(std::move(blocks[i]));
+    blocks = std::move(sorted);
+  }
+  merge_pass(blocks, false, extent);
+  merge_pass(blocks, true, extent);
+  return blocks;
 }
 
 }  // namespace pbrfit::store

@@ -25,12 +25,9 @@ std::uint64_t record_checksum(std::uint64_t length, std::span<const std::byte> p
 Bytes framed(std::span<const std::byte> payload) {
   ByteWriter out;
   out.put<std::uint64_t>(payload.size());
-  Bytes bytes = out.take();
-  bytes.insert(bytes.end(), payload.begin(), payload.end());
-  ByteWriter tail;
-  tail.put(record_checksum(payload.size(), payload));
-  bytes.insert(bytes.end(), tail.bytes().begin(), tail.bytes().end());
-  return bytes;
+  out.put_raw(payload);
+  out.put(record_checksum(payload.size(), payload));
+  return out.take();
 }
 
 [[noreturn]] void reject(const std::string& path, const LogFormat& format, std::uint64_t offset, const std::string& what) {

@@ -75,7 +75,7 @@ TableIndex::TableIndex(const ResultLayout& layout) {
 }
 
 std::uint32_t TableIndex::find(const std::string& group, const std::string& table) const {
-  const auto found = by_name_.find({group, table});
+  const auto found = by_name_.find(std::pair<std::string_view, std::string_view>(group, table));
   if (found == by_name_.end()) throw std::logic_error("no table " + group + "/" + table + " in the layout");
   return found->second;
 }

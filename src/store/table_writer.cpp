@@ -1,7 +1,5 @@
 #include "table_writer.hpp"
 
-#include <map>
-
 #include "block_merge.hpp"
 #include "element_types.hpp"
 #include "hdf5_handle.hpp"
@@ -50,19 +48,19 @@ void write_table(hid_t file, const Group& group, const Table& table, std::vector
 }  // namespace
 
 void write_blocks(hid_t file, const ResultLayout& layout, std::vector<Block> blocks) {
-  std::map<std::pair<std::string, std::string>, std::vector<Block>> by_table;
-  for (auto& b : blocks) by_table[{b.group, b.table}].push_back(std::move(b));
-  for (const auto& group : layout.groups) {
-    for (const auto& table : group.tables) {
-      auto found = by_table.find({group.name, table.name});
-      if (found == by_table.end()) continue;
-      write_table(file, group, table, std::move(found->second));
-      by_table.erase(found);
-    }
+  // Bucketed by table in layout order; a block names the table of the block before it more often than not.
+  const TableIndex index(layout);
+  std::vector<std::vector<Block>> by_table(index.size());
+  std::uint32_t last = index.size();
+  for (auto& b : blocks) {
+    if (last == index.size() || b.table != index.table(last).name || b.group != index.group_of(last))
+      last = index.find(b.group, b.table);
+    by_table[last].push_back(std::move(b));
   }
-  if (!by_table.empty())
-    throw std::logic_error("a block names table " + by_table.begin()->first.first + "/" +
-                           by_table.begin()->first.second + ", which the layout does not have");
+  std::uint32_t t = 0;
+  for (const auto& group : layout.groups)
+    for (const auto& table : group.tables)
+      if (auto& of_table = by_table[t++]; !of_table.empty()) write_table(file, group, table, std::move(of_table));
 }
 
 }  // namespace pbrfit::store

@@ -43,6 +43,8 @@ class ByteWriter {
     put_array(std::span<const char>(s.data(), s.size()));
   }
   void put_bytes(const Bytes& b) { put_array(std::span<const std::byte>(b)); }
+  // Appends bytes as they are, without a length: a copy of what another writer encoded.
+  void put_raw(std::span<const std::byte> b) { append(b.data(), b.size()); }
   const Bytes& bytes() const { return bytes_; }
   Bytes take() { return std::move(bytes_); }
 

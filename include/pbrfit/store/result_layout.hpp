@@ -10,6 +10,8 @@
 #include <cstdint>
 #include <map>
 #include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 #include "pbrfit/store/number.hpp"
@@ -98,9 +100,18 @@ class TableIndex {
   std::uint32_t size() const { return std::uint32_t(tables_.size()); }
 
  private:
+  // Ordered by (group, table) name; looked up by views, so that finding a block's table copies no name.
+  struct NameLess {
+    using is_transparent = void;
+    template <class A, class B>
+    bool operator()(const A& a, const B& b) const {
+      return std::pair<std::string_view, std::string_view>(a.first, a.second) <
+             std::pair<std::string_view, std::string_view>(b.first, b.second);
+    }
+  };
   std::vector<Table> tables_;
   std::vector<std::string> groups_;
-  std::map<std::pair<std::string, std::string>, std::uint32_t> by_name_;
+  std::map<std::pair<std::string, std::string>, std::uint32_t, NameLess> by_name_;
 };
 
 // The type of each number of an element, in order: the table's type, or its numeric fields' types.

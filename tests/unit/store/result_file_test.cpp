@@ -104,6 +104,22 @@ TEST_CASE("a table written cell by cell, out of order, in one batch holds every 
   CHECK(store::read_table(path, "grid/value") == std::vector<double>{0, 1, 2, 3, 4, 5});
 }
 
+TEST_CASE("of two blocks for the same cells in one batch the later wins, whatever the order and the tables between") {
+  const auto path = temporary_path("overwrite.h5");
+  store::ResultFile file(path, grid_layout(), info());
+  const std::vector<store::Block> blocks = {
+      {"grid", "value", {0, 0}, {1, 1}, {1.0}, {}},      {"grid", "per_row", {0}, {1}, {7.0}, {}},
+      {"grid", "value", {0, 1}, {1, 1}, {2.0}, {}},      {"grid", "value", {2, 1}, {1, 1}, {6.0}, {}},
+      {"grid", "value", {0, 0}, {1, 1}, {9.0}, {}},      {"grid", "value", {1, 0}, {1, 2}, {3.0, 4.0}, {}},
+      {"grid", "per_row", {1}, {2}, {8.0, 10.0}, {}},    {"grid", "value", {2, 0}, {1, 1}, {5.0}, {}},
+      {"grid", "value", {1, 1}, {1, 1}, {-4.0}, {}},     {"grid", "per_row", {2}, {1}, {9.0}, {}},
+  };
+  file.write(blocks, progress(3));
+  file.publish();
+  CHECK(store::read_table(path, "grid/value") == std::vector<double>{9, 2, 3, -4, 5, 6});
+  CHECK(store::read_table(path, "grid/per_row") == std::vector<double>{7, 8, 9});
+}
+
 TEST_CASE("tables keep their declared types: float32, integers, texts, records and growing tables") {
   const auto path = temporary_path("typed.h5");
   store::ResultFile file(path, typed_layout(), info());
