@@ -115,10 +115,16 @@ sweep:
   axes: [{name: sqrt_one_minus_cos, count: 4}, {name: roughness, from: 0.3, to: 1, count: 4}]
   march: {axis: sqrt_one_minus_cos}
   fit: {global_search: never, warm_evaluations: 120}
-  objective: {samples: 128, judge_samples: 256, polygon_quads: 16, fit_to: lights}
+  objective: {samples: 128, judge_samples: 256, polygon_quads: 16, fit_to: lights, training_quads: 24}
 YAML
 GROUPS_TO_COMPARE=(/ltc)
 compare_layouts lights.yaml
+/usr/bin/python3 -c "
+import h5py
+text = h5py.File('lights-ref.h5', 'r')['ltc'].attrs['fit_to']
+text = text.decode() if isinstance(text, bytes) else text
+assert 'refined on 24 training quad lights' in text, text
+" || fail "the table fitted to lights does not name the 24 training lights it was refined on"
 
 note "report of the families' tables"
 "$PBRFIT" report families-ref.h5 --out families-report >/dev/null

@@ -54,6 +54,9 @@ LtcProblemSettings objective_settings(const ObjectiveKeys& objective) {
   if (objective.fit_to_lights.value) {
     if (s.polygon_quads == 0) objective.fit_to_lights.reject("is 'lights', which needs 'polygon_quads' > 0 to judge the fit");
     s.fit_to = LtcProblemSettings::FitTo::lights;
+    if (objective.training_quads.written) s.training_quads = objective.training_quads.value;
+  } else if (objective.training_quads.written) {
+    objective.training_quads.reject("is read with 'fit_to: lights' only");
   }
   return s;
 }

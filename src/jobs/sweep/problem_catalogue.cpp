@@ -43,9 +43,9 @@ std::unique_ptr<SweepProblem> make_parallax(const SweepKeys& sweep, ParallaxStud
 const std::vector<ProblemEntry>& problem_catalogue() {
   static const std::vector<ProblemEntry> entries = {
       {"ltc_ggx", "isotropic LTC table of GGX (Heitz et al. 2016) on the published grid, beside the published table",
-       {"samples", "judge_samples", "polygon_quads", "polygon_tolerance", "fit_to", "render_size"}, make_ltc_ggx},
+       {"samples", "judge_samples", "polygon_quads", "polygon_tolerance", "fit_to", "training_quads", "render_size"}, make_ltc_ggx},
       {"ltc", "isotropic LTC tables of the built-in BRDF families, a BRDF expression or a measured material",
-       {"samples", "judge_samples", "polygon_quads", "polygon_tolerance", "fit_to", "render_size"}, make_ltc},
+       {"samples", "judge_samples", "polygon_quads", "polygon_tolerance", "fit_to", "training_quads", "render_size"}, make_ltc},
       {"sphere_light", "GGX lit by a spherical light: roughness modification, capped, representative point models",
        {"norm", "tolerance", "max_evaluations", "views"}, make_sphere_light},
       {"multi_lobe_sg", "multi-lobe spherical Gaussian kernel for GGX environment lighting", {"samples", "lobes"},
@@ -89,6 +89,9 @@ spec::Keys<ObjectiveKeys> objective_keys() {
       .range(1e-8, 0.1);
   k.choice<bool>("fit_to", {{"lobe", false}, {"lights", true}},
                  "what an LTC is fitted to: its lobe (the cubed error), or refined on quad lights", &O::fit_to_lights);
+  k.integer("training_quads", "fit_to lights: the quad lights each lobe fit is refined on (another seed than the "
+            "judging lights)", &O::training_quads)
+      .range(8, 4096);
   k.choice<double>("norm",
                    {{"L1", 1.0}, {"L2", 2.0}, {"L3", 3.0}, {"Linf", std::numeric_limits<double>::infinity()}},
                    "the error norm between target and model", &O::norm);

@@ -10,7 +10,7 @@
 // Each model fits (m00, m11, m02, m20) of isotropic_parameters.hpp with the albedo as amplitude; at
 // normal view the lobe is rotationally symmetric (m11 = m00, m02 = m20 = 0). Error: the cubed error of
 // fit_error.hpp (MIS over lobe and LTC samples, `objective_points` each). With fit_to = lights the fit is then
-// refined on 64 training quad lights (ltc/polygon_lighting.hpp, their own seed): the objective is
+// refined on `training_quads` quad lights (default 256; ltc/polygon_lighting.hpp, their own seed): the objective is
 // PolygonLights::score plus 0.01 x the cubed error relative to the lobe fit's, and that is the `error`.
 //
 // Outputs per cell, in order: error_cubed and error_l2 on the judge's finer lattice; for a lobe with a
@@ -69,7 +69,7 @@ struct LtcProblemSettings {
   std::size_t polygon_quads = 64;  // judging lights; 0: no polygon-lighting errors
   ltc::QuadIntegralOptions polygon;
   enum class FitTo { lobe, lights } fit_to = FitTo::lobe;
-  std::size_t training_quads = 64;           // lights a fit_to = lights table is refined on
+  std::size_t training_quads = 256;          // lights a fit_to = lights table is refined on
   std::size_t refinement_evaluations = 150;  // ... and the objective evaluations it may spend
   std::size_t render_size = 64;              // pixels a side of the check render; 0: none
   std::map<std::string, std::string> attributes;  // further group attributes
