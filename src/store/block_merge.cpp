@@ -47,9 +47,9 @@ std::vector<Block> merge_touching_blocks(std::vector<Block> blocks, const std::v
   if (blocks.size() < 2 || blocks.front().count.empty()) return blocks;
   // Stable: of two blocks at one offset, the later stays later and so is written last. The order is found
   // on indices, so each block moves at most once, and not at all when the blocks came in order.
-  const auto by_offset = [&](std::uint32_t a, std::uint32_t b) { return blocks[a].offset < blocks[b].offset; };
-  std::vector<std::uint32_t> order(blocks.size());
-  std::iota(order.begin(), order.end(), std::uint32_t{0});
+  const auto by_offset = [&](std::size_t a, std::size_t b) { return blocks[a].offset < blocks[b].offset; };
+  std::vector<std::size_t> order(blocks.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
   if (!std::is_sorted(order.begin(), order.end(), by_offset)) {
     std::stable_sort(order.begin(), order.end(), by_offset);
     std::vector<Block> sorted;
