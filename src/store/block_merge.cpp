@@ -1,7 +1,7 @@
 #include "block_merge.hpp"
 
 #include <algorithm>
-#include <numeric>
+#include <utility>
 
 namespace pbrfit::store {
 
@@ -41,20 +41,40 @@ void merge_pass(std::vector<Block>& blocks, bool rows, const std::vector<std::ui
   blocks.resize(kept + 1);
 }
 
+// Each block's offset as its row-major position in the table into order[i].first, so that comparing
+// positions compares offsets (every offset beyond the first lies inside its extent, as check_block makes
+// sure). False, leaving order unusable, when a position would not fit in 64 bits.
+bool linear_positions(const std::vector<Block>& blocks, const std::vector<std::uint64_t>& extent,
+                      std::vector<std::pair<std::uint64_t, std::size_t>>& order) {
+  for (std::size_t i = 0; i < blocks.size(); ++i) {
+    std::uint64_t position = blocks[i].offset[0];
+    for (std::size_t d = 1; d < extent.size(); ++d)
+      if (__builtin_mul_overflow(position, extent[d], &position) ||
+          __builtin_add_overflow(position, blocks[i].offset[d], &position))
+        return false;
+    order[i].first = position;
+  }
+  return true;
+}
+
 }  // namespace
 
 std::vector<Block> merge_touching_blocks(std::vector<Block> blocks, const std::vector<std::uint64_t>& extent) {
   if (blocks.size() < 2 || blocks.front().count.empty()) return blocks;
   // Stable: of two blocks at one offset, the later stays later and so is written last. The order is found
-  // on indices, so each block moves at most once, and not at all when the blocks came in order.
-  const auto by_offset = [&](std::size_t a, std::size_t b) { return blocks[a].offset < blocks[b].offset; };
-  std::vector<std::size_t> order(blocks.size());
-  std::iota(order.begin(), order.end(), std::size_t{0});
-  if (!std::is_sorted(order.begin(), order.end(), by_offset)) {
+  // on (position, index) pairs, so each block moves at most once, and not at all when the blocks came in order.
+  std::vector<std::pair<std::uint64_t, std::size_t>> order(blocks.size());
+  for (std::size_t i = 0; i < blocks.size(); ++i) order[i] = {0, i};
+  if (linear_positions(blocks, extent, order)) {
+    if (!std::is_sorted(order.begin(), order.end())) std::sort(order.begin(), order.end());
+  } else {
+    const auto by_offset = [&](const auto& a, const auto& b) { return blocks[a.second].offset < blocks[b.second].offset; };
     std::stable_sort(order.begin(), order.end(), by_offset);
+  }
+  if (!std::is_sorted(order.begin(), order.end(), [](const auto& a, const auto& b) { return a.second < b.second; })) {
     std::vector<Block> sorted;
     sorted.reserve(blocks.size());
-    for (const auto i : order) sorted.push_back(std::move(blocks[i]));
+    for (const auto& [position, i] : order) sorted.push_back(std::move(blocks[i]));
     blocks = std::move(sorted);
   }
   merge_pass(blocks, false, extent);

@@ -9,9 +9,9 @@
 
 namespace pbrfit::store {
 
-// `blocks` all belong to one table whose dimensions beyond the first have the given extents
-// (extent[0] is ignored). Returns them sorted by offset, touching neighbours merged; a later block for
-// the same cells still overwrites an earlier one.
+// `blocks` all belong to one table whose dimensions beyond the first have the given extents (extent[0] is
+// ignored), each already passed by check_block. Returns them sorted by offset, touching neighbours merged; a
+// later block for the same cells still overwrites an earlier one.
 std::vector<Block> merge_touching_blocks(std::vector<Block> blocks, const std::vector<std::uint64_t>& extent);
 
 }  // namespace pbrfit::store
