@@ -121,7 +121,7 @@ GROUPS_TO_COMPARE=(/ltc)
 compare_layouts lights.yaml
 /usr/bin/python3 -c "
 import h5py
-text = h5py.File('lights-ref.h5', 'r')['ltc'].attrs['fit_to']
+text = h5py.File('lights-ref.h5', 'r')['ltc/level0'].attrs['fit_to']
 text = text.decode() if isinstance(text, bytes) else text
 assert 'refined on 24 training quad lights' in text, text
 " || fail "the table fitted to lights does not name the 24 training lights it was refined on"
