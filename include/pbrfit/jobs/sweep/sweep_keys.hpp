@@ -60,7 +60,7 @@ struct ObjectiveKeys {
   std::optional<double> polygon_tolerance;
   spec::Located<bool> fit_to_lights;  // fit_to: lights
   spec::Located<std::size_t> training_quads;  // read with fit_to: lights only
-  spec::Located<double> norm{2.0};    // the p of the L^p norm: 1, 2, 3 or +inf
+  spec::Located<double> norm{2.0, false, {}, {}};  // the p of the L^p norm: 1, 2, 3 or +inf
   spec::Located<bool> qmc;            // integrator: qmc
   std::optional<double> tolerance;
   spec::Located<double> coarse_tolerance;
