@@ -40,7 +40,8 @@ cmake --build "$build" -j "${JOBS:-2}" --target "${targets[@]}"
 built=$SECONDS
 
 reports=$(cd "$build" && pwd)/sanitizer-reports
-rm -rf "$reports" && mkdir -p "$reports"
+crashes=$(cd "$build" && pwd)/tracer-crashes
+rm -rf "$reports" "$crashes" && mkdir -p "$reports"
 common="log_path=$reports/report:print_suppressions=0"
 # The slow unwinder at malloc: OpenMPI unloads its components in MPI_Finalize, and the fast one stops in
 # them (no frame pointers), leaving leaks without a module lsan.supp could name; the slow one reaches the
@@ -50,9 +51,30 @@ export LSAN_OPTIONS="suppressions=$here/lsan.supp:print_suppressions=0"
 export UBSAN_OPTIONS="$common:print_stacktrace=1:halt_on_error=1"
 export TSAN_OPTIONS="$common:halt_on_error=1:second_deadlock_stack=1:suppressions=$here/tsan.supp"
 status=0
-(cd "$build" && ctest --output-on-failure "${select[@]}" -j 1) || status=$?
+log=$(cd "$build" && pwd)/sanitized-tests.log
+(cd "$build" && ctest --output-on-failure "${select[@]}" -j 1) 2>&1 | tee "$log" || status=${PIPESTATUS[0]}
 
+# LeakSanitizer's own tracer sometimes crashes at a process's exit ("Tracer caught signal 11 ... LeakSanitizer
+# has encountered a fatal error", google/sanitizers#1353, open): a failure of the tool, not a report about
+# the program. When every report is such a crash, the failed tests run once more, and only their second
+# run counts; the crashes are kept in tracer-crashes/ and named here. Any other report fails the run.
+tracer_crash_only() {
+  grep -q 'LeakSanitizer has encountered a fatal error' "$1" &&
+    ! grep -qE 'ERROR: (AddressSanitizer|LeakSanitizer: detected)|runtime error|WARNING: ThreadSanitizer' "$1"
+}
 found=$(find "$reports" -type f | sort)
+if [[ $status -ne 0 ]] && grep -qs 'LeakSanitizer has encountered a fatal error' "$log" $found; then
+  crashes_only=1
+  for f in $found; do tracer_crash_only "$f" || crashes_only=0; done
+  if ((crashes_only)); then
+    mkdir -p "$crashes" && cp "$log" "$crashes/" && { [[ -z $found ]] || mv $found "$crashes/"; }
+    echo "run.sh: LeakSanitizer's tracer crashed (google/sanitizers#1353); the failed tests run once more" \
+      "(the first run's log and reports: $crashes/)" >&2
+    status=0
+    (cd "$build" && ctest --output-on-failure --rerun-failed -j 1) || status=$?
+    found=$(find "$reports" -type f | sort)
+  fi
+fi
 if [[ -n $found ]]; then
   for f in $found; do echo "== $f"; cat "$f"; done
   echo "run.sh: $(wc -l <<<"$found") sanitizer report(s) under $sanitizers" >&2
