@@ -1,8 +1,11 @@
 #include "pbrfit/brdf/beckmann.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
+
+#include "closed_form_batch.hpp"
 
 namespace pbrfit::brdf {
 
@@ -27,13 +30,19 @@ BeckmannView::BeckmannView(double alpha, const Vector3& v)
     : alpha_(alpha), v_(v), view_lambda_(v.z() > 0.0 ? beckmann_smith_lambda(alpha, v.z()) : 0.0) {}
 
 double BeckmannView::operator()(const Vector3& l) const {
-  if (!(v_.z() > 0.0) || !(l.z() > 0.0)) return 0.0;
-  const Vector3 sum = v_ + l;
-  const double length = sum.norm();
-  if (length == 0.0) return 0.0;
-  const double distribution = beckmann_distribution(alpha_, sum.z() / length);
-  const double masking = 1.0 / (1.0 + view_lambda_ + beckmann_smith_lambda(alpha_, l.z()));
-  return distribution * masking / (4.0 * v_.z());
+  double value = 0.0;
+  many(&l, 1, &value);
+  return value;
+}
+
+void BeckmannView::many(const Vector3* l, std::size_t n, double* out) const {
+  if (n == 0) return;
+  if (!(v_.z() > 0.0)) {
+    std::fill(out, out + n, 0.0);
+    return;
+  }
+  const detail::BeckmannConstants constants{alpha_, v_.x(), v_.y(), v_.z(), view_lambda_};
+  detail::beckmann_batch(active_kernel_set())(constants, l, n, out);
 }
 
 double beckmann_cosine_weighted(double alpha, const Vector3& v, const Vector3& l) { return BeckmannView(alpha, v)(l); }

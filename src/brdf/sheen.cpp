@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "closed_form_batch.hpp"
+
 namespace pbrfit::brdf {
 namespace {
 
@@ -37,9 +39,20 @@ double CharlieView::lambda(double cosine) const {
 }
 
 double CharlieView::operator()(const Vector3& l) const {
-  if (!(v_.z() > 0.0) || !(l.z() > 0.0)) return 0.0;
-  const double distribution = charlie_distribution(alpha_, half_vector(v_, l).z());
-  return distribution / (4.0 * v_.z() * (1.0 + view_lambda_ + lambda(l.z())));
+  double value = 0.0;
+  many(&l, 1, &value);
+  return value;
+}
+
+void CharlieView::many(const Vector3* l, std::size_t n, double* out) const {
+  if (n == 0) return;
+  if (!(v_.z() > 0.0)) {
+    std::fill(out, out + n, 0.0);
+    return;
+  }
+  const detail::CharlieConstants constants{
+      1.0 / alpha_, v_.x(), v_.y(), v_.z(), view_lambda_, {p_[0], p_[1], p_[2], p_[3], p_[4]}, l_half_};
+  detail::charlie_batch(active_kernel_set())(constants, l, n, out);
 }
 
 double charlie_lambda(double alpha, double cosine) { return CharlieView(alpha, Vector3::UnitZ()).lambda(cosine); }

@@ -6,6 +6,7 @@
 #include <limits>
 #include <numbers>
 #include <stdexcept>
+#include <vector>
 
 #include "pbrfit/core/random_stream.hpp"
 #include "pbrfit/integrate/adaptive_cubature.hpp"
@@ -200,16 +201,23 @@ double ltc_quad_integral(const LtcDistribution& ltc, const Quad& quad) {
 }
 
 double lobe_peak_value(const brdf::Lobe& lobe, const Vector3& peak) {
-  double best = lobe.value(peak.normalized());
+  // The peak and a grid of the upper hemisphere, valued in one call (Lobe::value_many: vector code where
+  // the lobe has it, the same values as one direction at a time).
   constexpr int rings = 32, sectors = 64;
+  std::vector<Vector3> directions{peak.normalized()};
+  directions.reserve(1 + rings * sectors);
   for (int i = 0; i < rings; ++i) {
     const double z = 1.0 - (i + 0.5) / rings;
     const double radius = std::sqrt(std::max(0.0, 1.0 - z * z));
     for (int j = 0; j < sectors; ++j) {
       const double phi = 2.0 * std::numbers::pi * (j + 0.5) / sectors;
-      best = std::max(best, lobe.value(Vector3(radius * std::cos(phi), radius * std::sin(phi), z)));
+      directions.emplace_back(radius * std::cos(phi), radius * std::sin(phi), z);
     }
   }
+  std::vector<double> values(directions.size());
+  lobe.value_many(directions, values);
+  double best = values.front();
+  for (const double value : values) best = std::max(best, value);
   return best;
 }
 

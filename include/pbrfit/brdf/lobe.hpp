@@ -11,8 +11,10 @@
 //  - sample(u1, u2) returns a unit direction for (u1, u2) in [0, 1)^2 and is deterministic;
 //  - value(l) is evaluate(l).value, possibly cheaper; peak() is where rho is largest when the lobe knows it;
 //  - evaluate_many(l, out) sets out[i] = evaluate(l[i]) and value_many(l, out) out[i] = value(l[i]), bit for
-//    bit, for spans of equal length; a lobe may override them with vector code (arithmetic and sqrt only,
-//    which round the same in every kernel set);
+//    bit, for spans of equal length; a lobe may override them with vector code of the active kernel set
+//    (core/kernel_set.hpp): GgxLobe's has arithmetic and sqrt only, which round the same in every set;
+//    the Charlie and Beckmann lobes' use vector exp and log, so their values may differ between sets in
+//    the last bits (never between one direction and many);
 //  - a lobe is immutable once built and may be shared by threads.
 #include <optional>
 #include <span>

@@ -8,7 +8,13 @@
 //                whole sphere (ggx_lobe.hpp; a proposal with wider tails than Beckmann-like lobes)
 // The proposal need not be the lobe's own distribution; it only has to cover it (pdf > 0 wherever rho > 0).
 //
+// A Rho with a member many(l, n, out) (out[i] = rho(l[i]), as CharlieView's vector code) is called with
+// whole groups of directions by value_many() and evaluate_many(); it must give rho(l) the same value alone.
+//
 // Invariants: as Lobe; evaluate(l).value = rho(l).
+#include <algorithm>
+#include <array>
+#include <cstddef>
 #include <utility>
 
 #include "pbrfit/brdf/lobe.hpp"
@@ -48,7 +54,27 @@ class SampledLobe final : public Lobe {
   Vector3 sample(double u1, double u2) const override { return sampler_.sample(u1, u2); }
   double value(const Vector3& l) const override { return rho_(l); }
 
+  void value_many(std::span<const Vector3> l, std::span<double> out) const override {
+    if constexpr (batched) rho_.many(l.data(), l.size(), out.data());
+    else Lobe::value_many(l, out);
+  }
+
+  void evaluate_many(std::span<const Vector3> l, std::span<Evaluation> out) const override {
+    if constexpr (batched) {
+      std::array<double, 64> values;
+      for (std::size_t first = 0; first < l.size(); first += values.size()) {
+        const std::size_t n = std::min(values.size(), l.size() - first);
+        rho_.many(l.data() + first, n, values.data());
+        for (std::size_t i = 0; i < n; ++i) out[first + i] = {values[i], sampler_.pdf(l[first + i])};
+      }
+    } else {
+      Lobe::evaluate_many(l, out);
+    }
+  }
+
  private:
+  static constexpr bool batched = requires(const Rho& rho, const Vector3* l, double* out) { rho.many(l, 1, out); };
+
   Rho rho_;
   DirectionSampler sampler_;
 };

@@ -19,6 +19,8 @@
 //   rho(v, l) = (1 - r / 2) (n.l) / pi   for its roughness r in [0, 1].
 //
 // Both distributions are normalized: the integral of D(h) (n.h) over the hemisphere is 1.
+#include <cstddef>
+
 #include "pbrfit/geometry/vector.hpp"
 
 namespace pbrfit::brdf {
@@ -27,11 +29,17 @@ double charlie_distribution(double alpha, double n_dot_h);
 double charlie_lambda(double alpha, double cosine);
 double charlie_cosine_weighted(double alpha, const Vector3& v, const Vector3& l);
 
-// Charlie's rho for one view v, with the interpolated coefficients of L and Lambda(v) computed once.
+// Charlie's rho for one view v, with the interpolated coefficients of L and Lambda(v) computed once. rho goes
+// through vector code of the active kernel set (core/kernel_set.hpp): its powers and Lambda(l) are Eigen's exp
+// and log, within relative 1e-13 of std::pow and std::exp and possibly different between sets in the last bits;
+// one direction alone (operator(), charlie_cosine_weighted) gets the value it gets among many (many()).
+// lambda() and Lambda(v) are the scalar std::pow and std::exp form.
 class CharlieView {
  public:
   CharlieView(double alpha, const Vector3& v);
   double operator()(const Vector3& l) const;
+  // out[i] = (*this)(l[i]) for i < n.
+  void many(const Vector3* l, std::size_t n, double* out) const;
   double lambda(double cosine) const;
 
  private:

@@ -1,0 +1,6 @@
+// The closed-form lobes' batch kernels compiled for AVX-512 (core/kernel_set.hpp);
+// cmake/layers.cmake gives files named *_isa_<set>.cpp their flags, contraction into FMA off.
+#if defined(PBRFIT_X86_KERNELS)
+#define PBRFIT_KERNEL_ISA avx512
+#include "closed_form_batch_kernels.hpp"
+#endif
