@@ -19,8 +19,9 @@ double beckmann_cosine_weighted(double alpha, const Vector3& v, const Vector3& l
 
 // rho for one view v, with Lambda(v) computed once: BeckmannView(alpha, v)(l) = beckmann_cosine_weighted(alpha, v, l).
 // rho goes through vector code of the active kernel set (core/kernel_set.hpp): D's and Lambda(l)'s exp are
-// Eigen's, within relative 1e-14 of the scalar functions above and possibly different between sets in the
-// last bits; one direction alone gets the value it gets among many (many()). Lambda(v) is the scalar one.
+// Eigen's, within relative 1e-12 of the scalar functions above (unit-tested) and possibly different between
+// sets in the last bits; one direction alone gets the value it gets among many (many()). Lambda(v) is the
+// scalar one.
 class BeckmannView {
  public:
   BeckmannView(double alpha, const Vector3& v);

@@ -31,9 +31,9 @@ double charlie_cosine_weighted(double alpha, const Vector3& v, const Vector3& l)
 
 // Charlie's rho for one view v, with the interpolated coefficients of L and Lambda(v) computed once. rho goes
 // through vector code of the active kernel set (core/kernel_set.hpp): its powers and Lambda(l) are Eigen's exp
-// and log, within relative 1e-13 of std::pow and std::exp and possibly different between sets in the last bits;
-// one direction alone (operator(), charlie_cosine_weighted) gets the value it gets among many (many()).
-// lambda() and Lambda(v) are the scalar std::pow and std::exp form.
+// and log, within relative 1e-12 of std::pow and std::exp (unit-tested) and possibly different between sets
+// in the last bits; one direction alone (operator(), charlie_cosine_weighted) gets the value it gets among
+// many (many()). lambda() and Lambda(v) are the scalar std::pow and std::exp form.
 class CharlieView {
  public:
   CharlieView(double alpha, const Vector3& v);
