@@ -21,36 +21,14 @@ namespace {
 // log run the same operations on a packet of 2 as on a packet of 8 (the same polynomial, FMA wherever the set
 // has it), and division and sqrt are exact, so a direction's value is the same in either; unit tests hold
 // one direction alone to the same direction among many, bit for bit, in every set.
-constexpr int wide = static_cast<int>(kernel_lanes::lanes);
+constexpr int wide = kernel_lanes::lane_count;
 constexpr int narrow = 2;
 template <int W>
-using Lanes = Eigen::Array<double, W, 1>;
-
-// sqrt as a plain loop, which the compiler turns into the set's exact vector sqrt.
+using Lanes = kernel_lanes::LanesOf<W>;
 template <int W>
-Lanes<W> square_root(const Lanes<W>& x) {
-  Lanes<W> root;
-  for (int i = 0; i < W; ++i) root[i] = std::sqrt(x[i]);
-  return root;
-}
-
-template <int W>
-struct Directions {
-  Lanes<W> x, y, z;
-};
-
-// Up to W directions (n >= 1); lanes past n repeat the last one.
-template <int W>
-Directions<W> gather(const Vector3* v, std::size_t n) {
-  Directions<W> d;
-  for (int i = 0; i < W; ++i) {
-    const Vector3& w = v[std::min(static_cast<std::size_t>(i), n - 1)];
-    d.x[i] = w.x();
-    d.y[i] = w.y();
-    d.z[i] = w.z();
-  }
-  return d;
-}
+using Directions = kernel_lanes::DirectionsOf<W>;
+using kernel_lanes::gather;
+using kernel_lanes::square_root;
 
 // Each transcendental below is assigned to lanes of its own: inside a select() Eigen 3.4 would evaluate it
 // one coefficient at a time, through the scalar std::exp and std::log.
