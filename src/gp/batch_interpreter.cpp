@@ -8,6 +8,10 @@
 
 namespace pbrfit::gp {
 
+// ErrorSums interleaves its partial sums by row index modulo 4 within a block: blocks starting at multiples
+// of 4 make the sum's order, and so the error, independent of the block size.
+static_assert(block_rows % 4 == 0);
+
 template <class T>
 BatchInterpreter<T>::BatchInterpreter(const Dataset& dataset, const ErrorOptions& error_options)
     : columns_(dataset.inputs.template cast<T>()),

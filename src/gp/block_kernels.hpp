@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstring>
 #include <numbers>
 
 #include "block_kernel_sets.hpp"
@@ -26,13 +27,35 @@ template <class T>
 using ConstBlockMap = Eigen::Map<const Eigen::Array<T, Eigen::Dynamic, 1>>;
 
 template <class T, class F>
-inline void unary_loop(const T* a, T* out, std::size_t n, F f) {
+inline void unary_loop(const T* __restrict a, T* __restrict out, std::size_t n, F f) {
   for (std::size_t i = 0; i < n; ++i) out[i] = f(a[i]);
 }
 
 template <class T, class F>
-inline void binary_loop(const T* a, const T* b, T* out, std::size_t n, F f) {
+inline void binary_loop(const T* a, const T* b, T* __restrict out, std::size_t n, F f) {
   for (std::size_t i = 0; i < n; ++i) out[i] = f(a[i], b[i]);
+}
+
+// An operand of a block: its values, and whether they are one constant repeated.
+template <class T>
+struct BlockOperand {
+  const T* values;
+  bool constant;
+};
+
+// A binary operator with a constant operand reads the constant once into a register instead of its block
+// (the same values, so the same results): a constant costs no load per row and its block stays cold.
+template <class T, class F>
+inline void binary_block(BlockOperand<T> a, BlockOperand<T> b, T* out, std::size_t n, F f) {
+  if (b.constant && !a.constant) {
+    const T y = b.values[0];
+    unary_loop(a.values, out, n, [&](T x) { return f(x, y); });
+  } else if (a.constant && !b.constant) {
+    const T x = a.values[0];
+    unary_loop(b.values, out, n, [&](T y) { return f(x, y); });
+  } else {
+    binary_loop(a.values, b.values, out, n, f);
+  }
 }
 
 // Transcendentals run over chunks of a fixed size, copied into aligned local arrays padded past the
@@ -108,6 +131,13 @@ void transcendental_block(Opcode op, const T* a, const T* b, T* out, std::size_t
   const bool binary = arity(op) == 2;
   for (std::size_t first = 0; first < n; first += size) {
     const std::size_t m = std::min(size, n - first);
+    if (m == size) {  // a whole chunk: copies of a constant size, a few vector moves (copy_n of m is a rep movs)
+      std::memcpy(x, a + first, sizeof x);
+      if (binary) std::memcpy(y, b + first, sizeof y);
+      transcendental_chunk<T>(op, x, y, z);
+      std::memcpy(out + first, z, sizeof z);
+      continue;
+    }
     std::copy_n(a + first, m, x);
     std::fill(x + m, x + size, T(1));
     if (binary) {
@@ -120,31 +150,33 @@ void transcendental_block(Opcode op, const T* a, const T* b, T* out, std::size_t
 }
 
 template <class T>
-void run_block(Opcode op, const T* a, const T* b, const T* c, T* out, std::size_t n) {
+void run_block(Opcode op, BlockOperand<T> first, BlockOperand<T> second, const T* c, T* out, std::size_t n) {
+  const T* a = first.values;
+  const T* b = second.values;
   switch (op) {
     case Opcode::identity:
       unary_loop(a, out, n, [](T x) { return x; });
       break;
     case Opcode::add:
-      binary_loop(a, b, out, n, [](T x, T y) { return x + y; });
+      binary_block(first, second, out, n, [](T x, T y) { return x + y; });
       break;
     case Opcode::sub:
-      binary_loop(a, b, out, n, [](T x, T y) { return x - y; });
+      binary_block(first, second, out, n, [](T x, T y) { return x - y; });
       break;
     case Opcode::mul:
-      binary_loop(a, b, out, n, [](T x, T y) { return x * y; });
+      binary_block(first, second, out, n, [](T x, T y) { return x * y; });
       break;
     case Opcode::div:
-      binary_loop(a, b, out, n, [](T x, T y) { return x / y; });
+      binary_block(first, second, out, n, [](T x, T y) { return x / y; });
       break;
     case Opcode::fma:
       for (std::size_t i = 0; i < n; ++i) out[i] = a[i] * b[i] + c[i];
       break;
     case Opcode::min:
-      binary_loop(a, b, out, n, [](T x, T y) { return (x < y || x != x) ? x : y; });
+      binary_block(first, second, out, n, [](T x, T y) { return (x < y || x != x) ? x : y; });
       break;
     case Opcode::max:
-      binary_loop(a, b, out, n, [](T x, T y) { return (x > y || x != x) ? x : y; });
+      binary_block(first, second, out, n, [](T x, T y) { return (x > y || x != x) ? x : y; });
       break;
     case Opcode::abs:
       unary_loop(a, out, n, [](T x) { return std::abs(x); });
@@ -167,8 +199,8 @@ void run_schedule(const BlockSchedule<T>& schedule, std::size_t rows, std::size_
     const std::size_t n = std::min(block_rows, rows - first);
     for (std::size_t s = 0; s < schedule.step_count; ++s) {
       const auto& step = schedule.steps[s];
-      run_block<T>(step.op, step.operands[0].at(first), step.operands[1].at(first), step.operands[2].at(first),
-                   step.out, n);
+      const auto& [a, b, c] = step.operands;
+      run_block<T>(step.op, {a.at(first), a.constant}, {b.at(first), b.constant}, c.at(first), step.out, n);
     }
     sink.take(sink.context, first, n, schedule.output.at(first));
   }

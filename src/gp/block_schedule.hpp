@@ -19,6 +19,7 @@ template <class T>
 struct BlockPointer {
   const T* base;
   std::size_t advance;  // 1 for a data column, 0 for a slot or constant block
+  bool constant;        // a constant's block: every value is base[0], which kernels may read once
 
   const T* at(std::size_t first_row) const { return base + first_row * advance; }
 };
@@ -53,24 +54,24 @@ BlockSchedule<T> schedule_blocks(const Program& program, const Eigen::Array<T, E
     Step<T> step;
     step.op = instruction.op;
     step.out = slots.data() + block_size * schedule.step_count;
-    step.operands.fill({step.out, 0});
+    step.operands.fill({step.out, 0, false});
     for (int j = 0; j < arity(instruction.op); ++j) {
       const Operand& operand = instruction.operands[j];
       if (operand.source == Source::input) {
-        step.operands[j] = {columns.col(operand.index).data(), 1};
+        step.operands[j] = {columns.col(operand.index).data(), 1, false};
       } else if (operand.source == Source::instruction) {
         step.operands[j] = location[operand.index];
       } else {
         T* block = constant_blocks.data() + block_size * constants_used++;
         std::fill(block, block + block_size, static_cast<T>(instruction.constants[j]));
-        step.operands[j] = {block, 0};
+        step.operands[j] = {block, 0, true};
       }
     }
     if (instruction.op == Opcode::identity) {
       location[i] = step.operands[0];
       continue;
     }
-    location[i] = {step.out, 0};
+    location[i] = {step.out, 0, false};
     schedule.steps[schedule.step_count++] = step;
   }
   schedule.output = location[program.length - 1u];

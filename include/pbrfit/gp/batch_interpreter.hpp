@@ -1,10 +1,12 @@
 #pragma once
 // The data-parallel interpreter (Pesce & Iwanicki 2015, section 5.2): runs one instruction over a block
 // of block_rows rows at a time, so the cost of decoding an instruction is shared by the whole block and
-// every block's intermediate values stay in the L1 cache. T is float (the default of a run) or double.
+// every block's intermediate values stay in the cache (a float block is 2 KiB: the live values of a
+// typical program fit the L1 cache). T is float (the default of a run) or double.
 //
 // Contract:
-//  - only live instructions run (introns are skipped); identity instructions cost nothing;
+//  - only live instructions run (introns are skipped); identity instructions cost nothing; a binary
+//    operator reads a constant operand once, not per row;
 //  - outputs follow semantics.hpp; arithmetic, min, max, abs, neg, saturate, sqrt and rsqrt are bitwise
 //    equal to apply<T>(); exp, exp2, log, log2, pow, sin, cos, tan and the inverse trigonometric operators
 //    use vectorized implementations that may differ from the standard library's by a few ulps, and between
@@ -25,7 +27,10 @@
 
 namespace pbrfit::gp {
 
-inline constexpr std::size_t block_rows = 128;
+// 512 rows: 32 AVX-512 vectors of floats per instruction, enough to hide the per-instruction dispatch (128
+// rows ran float arithmetic at about 0.7 times the speed; docs/BENCHMARKS.md). Any multiple of 4 gives the
+// same errors, bitwise (error_sums.hpp interleaves by row index modulo 4).
+inline constexpr std::size_t block_rows = 512;
 
 template <class T>
 class BatchInterpreter {
