@@ -149,25 +149,53 @@ void transcendental_block(Opcode op, const T* a, const T* b, T* out, std::size_t
   }
 }
 
+// Calls visit with the function of a fusable operator (block_schedule.hpp).
+template <class T, class Visit>
+inline void with_arithmetic(Opcode op, Visit visit) {
+  switch (op) {
+    case Opcode::add:
+      visit([](T x, T y) { return x + y; });
+      break;
+    case Opcode::sub:
+      visit([](T x, T y) { return x - y; });
+      break;
+    case Opcode::mul:
+      visit([](T x, T y) { return x * y; });
+      break;
+    case Opcode::div:
+      visit([](T x, T y) { return x / y; });
+      break;
+    default:
+      break;
+  }
+}
+
+// A fused pair (block_schedule.hpp): the first operator's value stays in a register.
+template <class T>
+void run_fused_block(Opcode op, Opcode second, bool intermediate_left, const T* a, const T* b, const T* c,
+                     T* __restrict out, std::size_t n) {
+  with_arithmetic<T>(op, [&](auto f) {
+    with_arithmetic<T>(second, [&](auto g) {
+      if (intermediate_left) {
+        for (std::size_t i = 0; i < n; ++i) out[i] = g(f(a[i], b[i]), c[i]);
+      } else {
+        for (std::size_t i = 0; i < n; ++i) out[i] = g(c[i], f(a[i], b[i]));
+      }
+    });
+  });
+}
+
 template <class T>
 void run_block(Opcode op, BlockOperand<T> first, BlockOperand<T> second, const T* c, T* out, std::size_t n) {
   const T* a = first.values;
   const T* b = second.values;
+  if (fusable(op)) {
+    with_arithmetic<T>(op, [&](auto f) { binary_block(first, second, out, n, f); });
+    return;
+  }
   switch (op) {
     case Opcode::identity:
       unary_loop(a, out, n, [](T x) { return x; });
-      break;
-    case Opcode::add:
-      binary_block(first, second, out, n, [](T x, T y) { return x + y; });
-      break;
-    case Opcode::sub:
-      binary_block(first, second, out, n, [](T x, T y) { return x - y; });
-      break;
-    case Opcode::mul:
-      binary_block(first, second, out, n, [](T x, T y) { return x * y; });
-      break;
-    case Opcode::div:
-      binary_block(first, second, out, n, [](T x, T y) { return x / y; });
       break;
     case Opcode::fma:
       for (std::size_t i = 0; i < n; ++i) out[i] = a[i] * b[i] + c[i];
@@ -200,7 +228,12 @@ void run_schedule(const BlockSchedule<T>& schedule, std::size_t rows, std::size_
     for (std::size_t s = 0; s < schedule.step_count; ++s) {
       const auto& step = schedule.steps[s];
       const auto& [a, b, c] = step.operands;
-      run_block<T>(step.op, {a.at(first), a.constant}, {b.at(first), b.constant}, c.at(first), step.out, n);
+      if (step.second != Opcode::identity) {
+        run_fused_block<T>(step.op, step.second, step.intermediate_left, a.at(first), b.at(first), c.at(first),
+                           step.out, n);
+      } else {
+        run_block<T>(step.op, {a.at(first), a.constant}, {b.at(first), b.constant}, c.at(first), step.out, n);
+      }
     }
     sink.take(sink.context, first, n, schedule.output.at(first));
   }

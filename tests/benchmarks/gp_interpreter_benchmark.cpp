@@ -4,7 +4,7 @@
 // the batch interpreter (float and double) and the per-row tree walker, with arithmetic only (+ - * /)
 // and with transcendentals (+ - * / exp log sin cos sqrt), in every kernel set the machine has
 // (core/kernel_set.hpp).
-//   bench_gp_interpreter [expressions=1000] [walker_expressions=200] [repeats=3]
+//   bench_gp_interpreter [expressions=1000] [walker_expressions=200] [repeats=3] [operators=all|arithmetic|transcendental]
 // The tree walker runs on the first walker_expressions expressions (it is ~30x slower); the rates are
 // per node-row, so they compare directly. Each measurement is the best of `repeats` passes.
 #include <algorithm>
@@ -174,7 +174,8 @@ int main(int argc, char** argv) {
   std::printf(" tree walker | best batch / walker |\n|---|---|");
   for (std::size_t i = 0; i < kernel_sets.size(); ++i) std::printf("---|");
   std::printf("---|---|\n");
-  report("arithmetic", arithmetic_set, walker_count, dataset, repeats);
-  report("transcendental", transcendental_set, walker_count, dataset, repeats);
+  const std::string operators = argc > 4 ? argv[4] : "all";
+  if (operators != "transcendental") report("arithmetic", arithmetic_set, walker_count, dataset, repeats);
+  if (operators != "arithmetic") report("transcendental", transcendental_set, walker_count, dataset, repeats);
   return 0;
 }

@@ -6,7 +6,9 @@
 #include <limits>
 #include <vector>
 
+#include "block_schedule.hpp"
 #include "gp_test_support.hpp"
+#include "pbrfit/core/kernel_set.hpp"
 #include "pbrfit/gp/batch_interpreter.hpp"
 #include "pbrfit/gp/cost_model.hpp"
 #include "pbrfit/gp/fitness_evaluator.hpp"
@@ -122,6 +124,74 @@ TEST_CASE("Constant operands, first, second or both, give the scalar semantics i
           CHECK(disagreements<float>(program, 1e-6) == 0);
           CHECK(disagreements<double>(program, 1e-14) == 0);
         }
+  }
+}
+
+namespace {
+
+// The steps the interpreter runs for `program` over the mixed inputs, after fusing pairs.
+std::size_t scheduled_steps(const Program& program) {
+  const Eigen::ArrayXXf columns = mixed_inputs().inputs.cast<float>();
+  std::vector<float> slots(max_program_length * block_rows);
+  std::vector<float> constants(max_program_length * max_operands * block_rows);
+  return detail::schedule_blocks<float>(program, columns, slots, constants, block_rows).step_count;
+}
+
+}  // namespace
+
+// A step and the next fuse when the next is the only reader of its result, reading it once; the fused
+// pair computes what the two steps did, bitwise, in every kernel set.
+TEST_CASE("Arithmetic pairs fuse only where the next step alone reads the result, with the same values", "[gp]") {
+  const Argument x = input_argument(0);
+  const Argument y = input_argument(1);
+  const Argument z = input_argument(2);
+  struct Case {
+    const char* what;
+    Program program;
+    std::size_t steps;
+  };
+  std::vector<Case> cases;
+  {
+    ProgramBuilder b;
+    const Argument left = b.append(Opcode::mul, {b.append(Opcode::add, {x, y}), z});   // fused, left
+    const Argument right = b.append(Opcode::div, {z, b.append(Opcode::sub, {y, x})});  // fused, right
+    cases.push_back({"two pairs and their sum", b.finish(b.append(Opcode::add, {left, right})), 3});
+  }
+  {
+    ProgramBuilder b;
+    const Argument sum = b.append(Opcode::add, {x, y});
+    cases.push_back({"a result read twice", b.finish(b.append(Opcode::mul, {sum, sum})), 2});
+  }
+  {
+    ProgramBuilder b;
+    const Argument alias = b.append(Opcode::identity, {b.append(Opcode::add, {x, y})});
+    cases.push_back({"through an identity", b.finish(b.append(Opcode::mul, {alias, z})), 1});
+  }
+  {
+    ProgramBuilder b;
+    cases.push_back({"into a transcendental", b.finish(b.append(Opcode::exp, {b.append(Opcode::add, {x, y})})), 2});
+  }
+  {
+    ProgramBuilder b;
+    const Argument first = b.append(Opcode::add, {x, y});
+    const Argument second = b.append(Opcode::mul, {z, x});
+    cases.push_back({"a reader further on", b.finish(b.append(Opcode::sub, {first, second})), 2});
+  }
+  {
+    ProgramBuilder b;
+    const Argument k = constant_argument(0.5);
+    const Argument chain = b.append(Opcode::div, {k, b.append(Opcode::mul, {b.append(Opcode::sub, {x, k}), y})});
+    cases.push_back({"a chain of three, with constants", b.finish(b.append(Opcode::add, {chain, z})), 2});
+  }
+  for (const Case& c : cases) {
+    CAPTURE(c.what);
+    CHECK(scheduled_steps(c.program) == c.steps);
+    for (const auto set : pbrfit::kernel_sets_available()) {
+      const gp_test::KernelSetScope scope(set);
+      CAPTURE(pbrfit::kernel_set_name(set));
+      CHECK(disagreements<float>(c.program, 1e-6) == 0);  // bitwise where every operator is exact
+      CHECK(disagreements<double>(c.program, 1e-14) == 0);
+    }
   }
 }
 

@@ -12,6 +12,8 @@
 
 #include <Imath/half.h>
 
+#include "scratch_directory.hpp"
+
 namespace pbrfit::texture::testing {
 namespace {
 
@@ -121,16 +123,6 @@ std::string text(const Bytes& b, std::size_t at, std::size_t length) {
 
 namespace {
 
-struct ScratchDirectory {
-  std::filesystem::path path =
-      std::filesystem::temp_directory_path() / ("pbrfit-texture-tests-" + std::to_string(::getpid()));
-  ScratchDirectory() { std::filesystem::create_directories(path); }
-  ~ScratchDirectory() {
-    std::error_code ignored;
-    std::filesystem::remove_all(path, ignored);
-  }
-};
-
 std::string read_text(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
@@ -139,8 +131,8 @@ std::string read_text(const std::filesystem::path& path) {
 }  // namespace
 
 std::filesystem::path scratch(const std::string& name) {
-  static const ScratchDirectory directory;
-  return directory.path / name;
+  static const ScratchDirectory directory("pbrfit-texture-tests");
+  return directory.path() / name;
 }
 
 void write_file(const std::filesystem::path& path, const Bytes& bytes) {
