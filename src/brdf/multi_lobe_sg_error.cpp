@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <vector>
 
 #include "pbrfit/brdf/split_sum_dfg.hpp"
 #include "pbrfit/integrate/compensated_sum.hpp"
@@ -74,12 +75,13 @@ double MultiLobeSgError::squared_error(const MultiLobeSgParameters& parameters) 
     if (density > 0.0) sum.add(difference * difference / density);
   };
   for (const TargetSample& s : target_samples_) add(s.value, s.pdf, s.direction);
+  // Each lobe's samples go through the target's vector code together (evaluate_many is evaluate, bit for bit).
+  std::vector<Vector3> directions(points_.size());
+  std::vector<Lobe::Evaluation> targets(points_.size());
   for (const SphericalGaussian& lobe : lobes) {
-    for (const auto& u : points_) {
-      const Vector3 w = lobe.sample(u[0], u[1]);
-      const auto t = target_.evaluate(w);
-      add(t.value, t.pdf, w);
-    }
+    for (std::size_t i = 0; i < points_.size(); ++i) directions[i] = lobe.sample(points_[i][0], points_[i][1]);
+    target_.evaluate_many(directions, targets);
+    for (std::size_t i = 0; i < points_.size(); ++i) add(targets[i].value, targets[i].pdf, directions[i]);
   }
   return sum.value() / static_cast<double>(points_.size());
 }
