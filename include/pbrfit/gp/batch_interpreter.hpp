@@ -6,7 +6,8 @@
 //
 // Contract:
 //  - only live instructions run (introns are skipped); identity instructions cost nothing; a binary
-//    operator reads a constant operand once, not per row;
+//    operator reads a constant operand once, not per row; two arithmetic instructions where the second
+//    alone reads the first may run as one loop (block_schedule.hpp), with the same results;
 //  - outputs follow semantics.hpp; arithmetic, min, max, abs, neg, saturate, sqrt and rsqrt are bitwise
 //    equal to apply<T>(); exp, exp2, log, log2, pow, sin, cos, tan and the inverse trigonometric operators
 //    use vectorized implementations that may differ from the standard library's by a few ulps, and between
@@ -28,8 +29,8 @@
 namespace pbrfit::gp {
 
 // 512 rows: 32 AVX-512 vectors of floats per instruction, enough to hide the per-instruction dispatch (128
-// rows ran float arithmetic at about 0.7 times the speed; docs/BENCHMARKS.md). Any multiple of 4 gives the
-// same errors, bitwise (error_sums.hpp interleaves by row index modulo 4).
+// rows ran float arithmetic at about three quarters of the speed; docs/BENCHMARKS.md). Any multiple of 4
+// gives the same errors, bitwise (error_sums.hpp interleaves by row index modulo 4).
 inline constexpr std::size_t block_rows = 512;
 
 template <class T>
