@@ -7,6 +7,7 @@
 #include "pbrfit/brdf/ggx_lobe.hpp"
 #include "pbrfit/integrate/compensated_sum.hpp"
 #include "pbrfit/integrate/gauss_kronrod.hpp"
+#include "pbrfit/integrate/lp_term.hpp"
 
 namespace pbrfit::brdf {
 namespace {
@@ -69,11 +70,7 @@ double SphereLightTarget::error(const std::function<double(const Vector3&)>& mod
     return largest;
   }
   integrate::CompensatedSum sum;
-  for (const Node& node : nodes_) {
-    const double difference = std::abs(node.truth - model(node.view));
-    // p = 2 (the L2 norm, the jobs' default) as a product: libm's pow took a fifth of a sphere-light sweep.
-    sum.add(node.weight * (p == 2.0 ? difference * difference : std::pow(difference, p)));
-  }
+  for (const Node& node : nodes_) sum.add(node.weight * integrate::lp_term(node.truth - model(node.view), p));
   return p == 2.0 ? std::sqrt(sum.value()) : std::pow(sum.value(), 1.0 / p);
 }
 

@@ -8,6 +8,7 @@
 #include "pbrfit/gp/expression_parser.hpp"
 #include "pbrfit/gp/tree_walker.hpp"
 #include "pbrfit/integrate/direction_domain.hpp"
+#include "pbrfit/integrate/lp_term.hpp"
 #include "pbrfit/integrate/qmc_nodes.hpp"
 
 namespace pbrfit::jobs::sweep {
@@ -16,12 +17,6 @@ namespace {
 constexpr double infinity = std::numeric_limits<double>::infinity();
 
 bool is_direction(ExpressionDomain d) { return d == ExpressionDomain::sphere || d == ExpressionDomain::hemisphere; }
-
-// The distance's integrand |t - m|^p (p finite).
-double power_of(double difference, double p) {
-  const double a = std::abs(difference);
-  return p == 1.0 ? a : p == 2.0 ? a * a : std::pow(a, p);
-}
 
 double root_of(double integral, double p) { return p == 1.0 ? integral : std::pow(std::max(integral, 0.0), 1.0 / p); }
 
@@ -81,7 +76,7 @@ class ExpressionCell final : public CellTarget {
     for (std::size_t i = 0; i < model.size(); ++i) {
       const double d = target_values_[i] - model[i];
       if (!std::isfinite(d)) return infinity;
-      sum = std::isinf(s_.p) ? std::max(sum, std::abs(d)) : sum + nodes_->weights[i] * power_of(d, s_.p);
+      sum = std::isinf(s_.p) ? std::max(sum, std::abs(d)) : sum + nodes_->weights[i] * integrate::lp_term(d, s_.p);
     }
     return std::isinf(s_.p) ? sum : root_of(sum, s_.p);
   }
@@ -97,7 +92,7 @@ class ExpressionCell final : public CellTarget {
       std::copy(point.begin(), point.end(), row.begin());
       const double d = gp::walk_tree<double>(s_.target, row) - model(row);
       if (!std::isfinite(d)) finite = false;
-      return std::array<double, 1>{std::isfinite(d) ? power_of(d, s_.p) : 0.0};
+      return std::array<double, 1>{std::isfinite(d) ? integrate::lp_term(d, s_.p) : 0.0};
     };
     const double integral = adaptive_integral(integrand, options);
     return finite ? root_of(integral, s_.p) : infinity;
