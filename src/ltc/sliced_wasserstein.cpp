@@ -2,12 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
+#include <cstdint>
+#include <limits>
 #include <stdexcept>
 #include <utility>
 
+#include "pbrfit/core/kernel_set.hpp"
 #include "pbrfit/ltc/clamped_cosine.hpp"
 #include "pbrfit/ltc/point_sets.hpp"
+#include "projection_sort.hpp"
 
 namespace pbrfit::ltc {
 
@@ -21,20 +24,23 @@ SlicedWasserstein::SlicedWasserstein(std::span<const Vector3> targets, std::vect
   if (n == 0 || base_.size() != n || axes_.empty()) {
     throw std::invalid_argument("ltc: sliced Wasserstein needs targets, one base sample per target, and axes");
   }
-  sorted_targets_.resize(axes_.size() * n);
-  for (std::size_t p = 0; p < axes_.size(); ++p) {
-    const auto row = sorted_targets_.begin() + static_cast<std::ptrdiff_t>(p * n);
-    for (std::size_t k = 0; k < n; ++k) row[static_cast<std::ptrdiff_t>(k)] = axes_[p].dot(targets[k]);
-    std::sort(row, row + static_cast<std::ptrdiff_t>(n));
+  if (n > std::numeric_limits<std::uint32_t>::max()) {
+    throw std::invalid_argument("ltc: sliced Wasserstein takes fewer than 2^32 samples");
   }
   transformed_.resize(n);
   lengths_.resize(n);
+  values_.resize(n);
+  keys_.resize(n);
   projections_.resize(n);
   signed_axes_.resize(n);
   signed_projections_.resize(n);
   orders_.resize(axes_.size() * n);
   ordered_.assign(axes_.size(), false);
-  for (std::size_t p = 0; p < axes_.size(); ++p) std::iota(order(p), order(p) + n, std::size_t{0});
+  sorted_targets_.resize(axes_.size() * n);
+  for (std::size_t p = 0; p < axes_.size(); ++p) {  // order(p) is scratch here: the first call ranks afresh
+    for (std::size_t k = 0; k < n; ++k) values_[k] = axes_[p].dot(targets[k]);
+    rank_sort(values_.data(), sorted_targets_.data() + p * n, order(p));
+  }
 }
 
 void SlicedWasserstein::transform_base(const Matrix3& m) {
@@ -45,26 +51,48 @@ void SlicedWasserstein::transform_base(const Matrix3& m) {
   }
 }
 
-void SlicedWasserstein::sort_projections(std::size_t p) {
-  const Vector3& axis = axes_[p];
-  std::size_t* ranked = order(p);
+void SlicedWasserstein::rank_sort(const double* values, double* sorted, std::uint32_t* order) {
   const std::size_t n = base_.size();
-  if (!ordered_[p]) {  // no previous order to start from: sort from scratch once
-    for (std::size_t k = 0; k < n; ++k) projections_[k] = axis.dot(transformed_[k]);
-    std::sort(ranked, ranked + n, [&](std::size_t a, std::size_t b) { return projections_[a] < projections_[b]; });
-    ordered_[p] = true;
+  const double* keys = values;
+  if (std::any_of(values, values + n, [](double v) { return std::isnan(v); })) {
+    for (std::size_t k = 0; k < n; ++k)
+      keys_[k] = std::isnan(values[k]) ? std::numeric_limits<double>::infinity() : values[k];
+    keys = keys_.data();
   }
+  detail::projection_sort(active_kernel_set()).rank(keys, values, n, sorted, order);
+}
+
+bool SlicedWasserstein::insertion_sort(std::uint32_t* ranked, std::size_t budget) {
+  const std::size_t n = base_.size();
+  std::size_t moves = 0;
   for (std::size_t i = 0; i < n; ++i) {
-    const std::size_t k = ranked[i];
-    const double value = axis.dot(transformed_[k]);
+    const std::uint32_t k = ranked[i];
+    const double value = values_[k];
     std::size_t j = i;
-    for (; j > 0 && projections_[j - 1] > value; --j) {
+    for (; j > 0 && (projections_[j - 1] > value || (projections_[j - 1] == value && ranked[j - 1] > k)); --j) {
+      if (++moves > budget) return false;
       projections_[j] = projections_[j - 1];
       ranked[j] = ranked[j - 1];
     }
     projections_[j] = value;
     ranked[j] = k;
   }
+  return true;
+}
+
+void SlicedWasserstein::sort_projections(std::size_t p) {
+  const Vector3& axis = axes_[p];
+  const std::size_t n = base_.size();
+  bool has_nan = false;
+  for (std::size_t k = 0; k < n; ++k) {
+    values_[k] = axis.dot(transformed_[k]);
+    has_nan |= std::isnan(values_[k]);
+  }
+  // An insertion sort never sees a NaN, so that its comparisons stay a total order.
+  const std::size_t budget = detail::projection_sort(active_kernel_set()).insertion_budget;
+  if (ordered_[p] && !has_nan && insertion_sort(order(p), budget)) return;
+  rank_sort(values_.data(), projections_.data(), order(p));
+  ordered_[p] = true;
 }
 
 double SlicedWasserstein::distance(const Matrix3& m) {
@@ -90,7 +118,7 @@ double SlicedWasserstein::gradient(const Matrix3& m, Matrix3& gradient) {
   for (std::size_t p = 0; p < axes_.size(); ++p) {
     const Vector3& axis = axes_[p];
     sort_projections(p);
-    const std::size_t* ranked = order(p);
+    const std::uint32_t* ranked = order(p);
     const double* targets = sorted_targets_.data() + p * n;
     for (std::size_t i = 0; i < n; ++i) {
       const double difference = projections_[i] - targets[i];

@@ -11,10 +11,16 @@
 //
 // Invariants: the targets' sorted projections are computed once, by the constructor; distance() and
 // gradient() allocate nothing (the object owns its scratch space, so it is not shared between threads);
-// targets and base samples are unit vectors, base samples have z > 0, and there is one base sample per target.
-// Each axis keeps the sample order of the previous call and re-sorts from it by insertion (an optimizer's
-// successive matrices are close, so few samples move); the values returned do not depend on that history.
+// targets and base samples are unit vectors, base samples have z > 0, and there is one base sample per target
+// (fewer than 2^32).
+// Samples are ordered on each axis by (projection, index), a total order (NaN after +inf), so the pairing of
+// samples with targets is a function of M alone, even where projections tie. Each axis keeps the order of the
+// previous call and re-sorts from it by insertion (an optimizer's successive matrices are close, so few
+// samples move); once an insertion would move more samples than counting every rank costs, the axis is
+// ranked by the vector kernel instead (projection_sort.hpp). Either way gives the same order: the values
+// returned do not depend on that history or on the kernel set.
 #include <cstddef>
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -35,20 +41,27 @@ class SlicedWasserstein {
 
  private:
   void transform_base(const Matrix3& m);
-  // Projects the transformed samples on axis p, in the order left by the previous call, and sorts by
-  // insertion: afterwards order(p) lists sample indices by increasing projection, projections_ the values.
+  // Projects the transformed samples on axis p and sorts them: afterwards order(p) lists sample indices by
+  // (projection, index), projections_ the projections in that order.
   void sort_projections(std::size_t p);
-  std::size_t* order(std::size_t p) { return orders_.data() + p * base_.size(); }
+  // Re-sorts order(p) by insertion from the previous call's order, unless that would move more than `budget`
+  // samples; false then, with order(p) some permutation.
+  bool insertion_sort(std::uint32_t* ranked, std::size_t budget);
+  // Ranks values (any NaN ranks after +inf) into sorted and order by the vector kernel.
+  void rank_sort(const double* values, double* sorted, std::uint32_t* order);
+  std::uint32_t* order(std::size_t p) { return orders_.data() + p * base_.size(); }
 
   std::vector<Vector3> base_;
   std::vector<Vector3> axes_;
   std::vector<double> sorted_targets_;  // [axis][rank]
   std::vector<Vector3> transformed_;    // normalize(M s_k)
   std::vector<double> lengths_;         // |M s_k|
+  std::vector<double> values_;          // projections on the current axis, by sample
+  std::vector<double> keys_;            // values_ with NaN as +inf, when there is a NaN
   std::vector<double> projections_;     // sorted projections on the current axis
   std::vector<Vector3> signed_axes_;    // gradient(): per sample, sum over axes of sign * axis
   std::vector<double> signed_projections_;  // gradient(): per sample, sum over axes of sign * projection
-  std::vector<std::size_t> orders_;     // [axis][rank]: sample indices by projection, from the last call
+  std::vector<std::uint32_t> orders_;   // [axis][rank]: sample indices by projection, from the last call
   std::vector<bool> ordered_;           // per axis: whether orders_ comes from a previous call
 };
 

@@ -1,0 +1,6 @@
+// The projection sort compiled for AVX2 with FMA (core/kernel_set.hpp);
+// cmake/layers.cmake gives files named *_isa_<set>.cpp their flags, contraction into FMA off.
+#if defined(PBRFIT_X86_KERNELS)
+#define PBRFIT_KERNEL_ISA avx2
+#include "projection_sort_kernels.hpp"
+#endif

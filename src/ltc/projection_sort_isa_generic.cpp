@@ -1,0 +1,4 @@
+// The projection sort compiled for the build's own target (no instruction-set flags) (core/kernel_set.hpp);
+// cmake/layers.cmake gives files named *_isa_<set>.cpp their flags, contraction into FMA off.
+#define PBRFIT_KERNEL_ISA generic
+#include "projection_sort_kernels.hpp"
