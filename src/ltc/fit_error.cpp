@@ -11,22 +11,17 @@
 namespace pbrfit::ltc {
 
 FitErrorEstimator::FitErrorEstimator(std::shared_ptr<const brdf::Lobe> target, std::size_t points)
-    : target_(std::move(target)) {
+    : FitErrorEstimator(target, target ? sample_lobe(*target, points) : LobeSamples{}) {}
+
+FitErrorEstimator::FitErrorEstimator(std::shared_ptr<const brdf::Lobe> target, LobeSamples target_samples)
+    : target_(std::move(target)),
+      target_directions_(std::move(target_samples.directions)),
+      target_values_(std::move(target_samples.values)),
+      target_pdfs_(std::move(target_samples.pdfs)) {
   if (!target_) throw std::invalid_argument("ltc: a fit error needs a target lobe");
-  target_directions_.reserve(points);
+  const std::size_t points = target_directions_.size();
   base_.reserve(points);
-  for (const auto& [u1, u2] : golden_lattice(points)) {
-    target_directions_.push_back(target_->sample(u1, u2));
-    base_.push_back(sample_clamped_cosine(u1, u2));
-  }
-  std::vector<brdf::Lobe::Evaluation> evaluations(points);
-  target_->evaluate_many(target_directions_, evaluations);
-  target_values_.reserve(points);
-  target_pdfs_.reserve(points);
-  for (const brdf::Lobe::Evaluation& e : evaluations) {
-    target_values_.push_back(e.value);
-    target_pdfs_.push_back(e.pdf);
-  }
+  for (const auto& [u1, u2] : golden_lattice(points)) base_.push_back(sample_clamped_cosine(u1, u2));
   double squared = 0.0;
   for (std::size_t i = 0; i < points; ++i)
     if (target_pdfs_[i] > 0.0) squared += target_values_[i] * target_values_[i] / target_pdfs_[i];

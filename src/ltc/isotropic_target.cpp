@@ -14,11 +14,17 @@ std::shared_ptr<const brdf::Lobe> checked(std::shared_ptr<const brdf::Lobe> lobe
 }  // namespace
 
 IsotropicTarget::IsotropicTarget(std::shared_ptr<const brdf::Lobe> lobe, const IsotropicTargetOptions& options)
-    : lobe_(checked(std::move(lobe))),
-      moments_(measure_moments(*lobe_, options.moment_points)),
-      objective_(lobe_, options.objective_points) {
+    : lobe_(checked(std::move(lobe))), objective_(lobe_, options.objective_points) {
+  // The moments and the judge sum over the same lattice's samples when their sizes agree (the defaults):
+  // the lobe is sampled and evaluated once for both.
+  LobeSamples samples = sample_lobe(*lobe_, options.moment_points);
+  moments_ = measure_moments(*lobe_, samples);
   if (symmetric()) moments_.average_direction = Vector3::UnitZ();
-  if (options.metric_points > 0) judge_.emplace(lobe_, options.metric_points);
+  if (options.metric_points == options.moment_points && options.metric_points > 0) {
+    judge_.emplace(lobe_, std::move(samples));
+  } else if (options.metric_points > 0) {
+    judge_.emplace(lobe_, options.metric_points);
+  }
 }
 
 Matrix3 IsotropicTarget::matrix(const IsotropicParameters& p) const {

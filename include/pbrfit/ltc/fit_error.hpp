@@ -10,7 +10,8 @@
 // are normalize(M s) for fixed cosine samples s, so the estimate is a deterministic function of M,
 // continuous wherever it is finite.
 //
-// Invariants: the target's samples, values and densities are computed once, by the constructor; an estimate
+// Invariants: the target's samples, values and densities are computed once, by the constructor (or drawn by
+// sample_lobe and handed to it, lobe_samples.hpp: the same values); an estimate
 // allocates nothing and depends only on (target, points, LTC); both errors are >= 0.
 #include <cstddef>
 #include <memory>
@@ -19,6 +20,7 @@
 #include "pbrfit/brdf/lobe.hpp"
 #include "pbrfit/geometry/vector.hpp"
 #include "pbrfit/ltc/distribution.hpp"
+#include "pbrfit/ltc/lobe_samples.hpp"
 
 namespace pbrfit::ltc {
 
@@ -31,6 +33,8 @@ struct FitError {
 class FitErrorEstimator {
  public:
   FitErrorEstimator(std::shared_ptr<const brdf::Lobe> target, std::size_t points);
+  // The same from the target's samples (sample_lobe(*target, points)), already drawn.
+  FitErrorEstimator(std::shared_ptr<const brdf::Lobe> target, LobeSamples target_samples);
 
   double cubed_error(const LtcDistribution& ltc) const;
   FitError errors(const LtcDistribution& ltc) const;

@@ -11,6 +11,7 @@
 
 #include "pbrfit/brdf/lobe.hpp"
 #include "pbrfit/geometry/vector.hpp"
+#include "pbrfit/ltc/lobe_samples.hpp"
 
 namespace pbrfit::ltc {
 
@@ -21,5 +22,7 @@ struct LobeMoments {
 };
 
 LobeMoments measure_moments(const brdf::Lobe& lobe, std::size_t points);
+// The same from the lobe's samples (sample_lobe(lobe, points)), already drawn.
+LobeMoments measure_moments(const brdf::Lobe& lobe, const LobeSamples& samples);
 
 }  // namespace pbrfit::ltc

@@ -1,6 +1,7 @@
 #include <catch2/catch_test_macros.hpp>
 
 #include <cstring>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -10,9 +11,12 @@
 #include "pbrfit/ltc/fit_error.hpp"
 #include "pbrfit/ltc/ggx_table.hpp"
 #include "pbrfit/ltc/isotropic_fit.hpp"
+#include "pbrfit/ltc/isotropic_target.hpp"
+#include "pbrfit/ltc/lobe_moments.hpp"
 #include "pbrfit/ltc/shader_form.hpp"
 
 using namespace pbrfit::ltc;
+using pbrfit::Matrix3;
 using pbrfit::Vector3;
 
 namespace {
@@ -95,4 +99,31 @@ TEST_CASE("At normal view the fit is a rotationally symmetric lobe", "[ltc]") {
   CHECK(fit.parameters.m02 == 0.0);
   CHECK(fit.parameters.m20 == 0.0);
   CHECK(fit.moments.average_direction == Vector3::UnitZ());
+}
+
+TEST_CASE("A cell samples its lobe once for moments and judge, with the values of separate samplings", "[ltc]") {
+  // IsotropicTarget hands one sample_lobe to both when the lattices agree; the moments and the judge's
+  // errors must be those of sampling the lobe for each alone, bit for bit, and so must a judge on its own
+  // lattice size (the separate path).
+  const auto lobe = std::make_shared<pbrfit::brdf::GgxLobe>(0.35, 0.6);
+  Matrix3 m;
+  m << 0.6, 0.0, 0.1, 0.0, 0.55, 0.0, -0.2, 0.0, 1.0;
+  for (const std::size_t metric_points : {std::size_t{1024}, std::size_t{2048}}) {
+    IsotropicTargetOptions options;
+    options.objective_points = 256;
+    options.moment_points = 1024;
+    options.metric_points = metric_points;
+    const IsotropicTarget target(lobe, options);
+    const LobeMoments moments = measure_moments(*lobe, 1024);
+    CHECK(std::memcmp(&target.moments().albedo, &moments.albedo, sizeof(double)) == 0);
+    CHECK(std::memcmp(&target.moments().fresnel, &moments.fresnel, sizeof(double)) == 0);
+    CHECK(target.moments().average_direction == moments.average_direction);
+    const FitError judged = target.judge(m);
+    const FitError alone = FitErrorEstimator(lobe, metric_points).errors(LtcDistribution(m, moments.albedo));
+    CAPTURE(metric_points);
+    CHECK(judged.cubed == alone.cubed);
+    CHECK(judged.l2 == alone.l2);
+    CHECK(judged.target_l2 == alone.target_l2);
+    CHECK(judged.l2 > 0.0);
+  }
 }
