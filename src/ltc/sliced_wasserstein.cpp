@@ -28,12 +28,15 @@ SlicedWasserstein::SlicedWasserstein(std::span<const Vector3> targets, std::vect
     throw std::invalid_argument("ltc: sliced Wasserstein takes fewer than 2^32 samples");
   }
   transformed_.resize(n);
+  coordinates_.resize(3 * n);
   lengths_.resize(n);
   values_.resize(n);
   keys_.resize(n);
+  rerank_keys_.resize(detail::rerank_scratch(n));
+  rerank_order_.resize(n);
   projections_.resize(n);
-  signed_axes_.resize(n);
-  signed_projections_.resize(n);
+  signed_sums_.resize(4 * n);
+  signs_.resize(n);
   orders_.resize(axes_.size() * n);
   ordered_.assign(axes_.size(), false);
   sorted_targets_.resize(axes_.size() * n);
@@ -48,6 +51,7 @@ void SlicedWasserstein::transform_base(const Matrix3& m) {
     const Vector3 image = m * base_[k];
     lengths_[k] = image.norm();
     transformed_[k] = image / lengths_[k];
+    for (int c = 0; c < 3; ++c) coordinates_[c * base_.size() + k] = transformed_[k][c];
   }
 }
 
@@ -62,35 +66,15 @@ void SlicedWasserstein::rank_sort(const double* values, double* sorted, std::uin
   detail::projection_sort(active_kernel_set()).rank(keys, values, n, sorted, order);
 }
 
-bool SlicedWasserstein::insertion_sort(std::uint32_t* ranked, std::size_t budget) {
-  const std::size_t n = base_.size();
-  std::size_t moves = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    const std::uint32_t k = ranked[i];
-    const double value = values_[k];
-    std::size_t j = i;
-    for (; j > 0 && (projections_[j - 1] > value || (projections_[j - 1] == value && ranked[j - 1] > k)); --j) {
-      if (++moves > budget) return false;
-      projections_[j] = projections_[j - 1];
-      ranked[j] = ranked[j - 1];
-    }
-    projections_[j] = value;
-    ranked[j] = k;
-  }
-  return true;
-}
-
 void SlicedWasserstein::sort_projections(std::size_t p) {
-  const Vector3& axis = axes_[p];
   const std::size_t n = base_.size();
-  bool has_nan = false;
-  for (std::size_t k = 0; k < n; ++k) {
-    values_[k] = axis.dot(transformed_[k]);
-    has_nan |= std::isnan(values_[k]);
-  }
-  // An insertion sort never sees a NaN, so that its comparisons stay a total order.
-  const std::size_t budget = detail::projection_sort(active_kernel_set()).insertion_budget;
-  if (ordered_[p] && !has_nan && insertion_sort(order(p), budget)) return;
+  const detail::ProjectionSort sort = detail::projection_sort(active_kernel_set());
+  const double* w = coordinates_.data();
+  const bool has_nan = sort.project(axes_[p].data(), w, w + n, w + 2 * n, n, values_.data());
+  // A re-rank from the last order never sees a NaN, so that its comparisons stay a total order.
+  if (ordered_[p] && !has_nan &&
+      sort.rerank(values_.data(), n, order(p), projections_.data(), rerank_keys_.data(), rerank_order_.data()))
+    return;
   rank_sort(values_.data(), projections_.data(), order(p));
   ordered_[p] = true;
 }
@@ -111,30 +95,40 @@ double SlicedWasserstein::gradient(const Matrix3& m, Matrix3& gradient) {
   transform_base(m);
   const std::size_t n = base_.size();
   // d(axis . w_k) / dM = ((axis - w_k (w_k . axis)) / |M s_k|) s_k^T, w_k = normalize(M s_k); summed over the
-  // axes with signs first: sum_p sign_pk (axis_p - w_k proj_pk) = signed_axes_k - w_k signed_projections_k.
-  std::fill(signed_axes_.begin(), signed_axes_.end(), Vector3::Zero());
-  std::fill(signed_projections_.begin(), signed_projections_.end(), 0.0);
+  // axes with signs first: sum_p sign_pk (axis_p - w_k proj_pk) = signed axis_k - w_k signed projection_k.
+  // Each axis' signs are put in sample order, then added to the per-sample sums a register at a time; each
+  // sample's sums still run over the axes in order, as sign * axis one at a time, so the values are those of
+  // adding them sample by sample (a sign of 0 adds +-0, which leaves a sum that is never -0 unchanged).
+  std::fill(signed_sums_.begin(), signed_sums_.end(), 0.0);
+  const detail::ProjectionSort sort = detail::projection_sort(active_kernel_set());
+  double* signs = signs_.data();
   double total = 0.0;
   for (std::size_t p = 0; p < axes_.size(); ++p) {
-    const Vector3& axis = axes_[p];
     sort_projections(p);
     const std::uint32_t* ranked = order(p);
     const double* targets = sorted_targets_.data() + p * n;
     for (std::size_t i = 0; i < n; ++i) {
       const double difference = projections_[i] - targets[i];
       total += std::abs(difference);
-      if (difference == 0.0) continue;
-      const std::size_t k = ranked[i];
-      const double sign = std::copysign(1.0, difference);
-      signed_axes_[k] += sign * axis;
-      signed_projections_[k] += sign * projections_[i];
+      signs[ranked[i]] = difference == 0.0 ? 0.0 : std::copysign(1.0, difference);
     }
+    // values_ holds the projections by sample, as projections_ by rank.
+    sort.add_signed(signs, values_.data(), axes_[p].data(), n, signed_sums_.data());
   }
-  gradient.setZero();
+  const double* signed_x = signed_sums_.data();
+  const double* signed_y = signed_x + n;
+  const double* signed_z = signed_y + n;
+  const double* signed_projections = signed_z + n;
+  // The outer products summed in registers, each element in the order of sample index.
+  double sum[3][3] = {};
   for (std::size_t k = 0; k < n; ++k) {
-    const Vector3 direction = (signed_axes_[k] - transformed_[k] * signed_projections_[k]) / lengths_[k];
-    gradient += direction * base_[k].transpose();
+    const Vector3 signed_axis(signed_x[k], signed_y[k], signed_z[k]);
+    const Vector3 direction = (signed_axis - transformed_[k] * signed_projections[k]) / lengths_[k];
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c) sum[r][c] += direction[r] * base_[k][c];
   }
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) gradient(r, c) = sum[r][c];
   const double scale = 1.0 / static_cast<double>(n * axes_.size());
   gradient *= scale;
   return total * scale;

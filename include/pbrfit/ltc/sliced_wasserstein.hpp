@@ -15,10 +15,10 @@
 // (fewer than 2^32).
 // Samples are ordered on each axis by (projection, index), a total order (NaN after +inf), so the pairing of
 // samples with targets is a function of M alone, even where projections tie. Each axis keeps the order of the
-// previous call and re-sorts from it by insertion (an optimizer's successive matrices are close, so few
-// samples move); once an insertion would move more samples than counting every rank costs, the axis is
-// ranked by the vector kernel instead (projection_sort.hpp). Either way gives the same order: the values
-// returned do not depend on that history or on the kernel set.
+// previous call and re-ranks from it, counting each sample's rank among its neighbours in that order (an
+// optimizer's successive matrices are close, so samples move a few places); where one moved too far, or two
+// projections tie, the axis is ranked among all samples instead (both vector kernels, projection_sort.hpp).
+// Either way gives the same order: the values returned do not depend on that history or on the kernel set.
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -44,9 +44,6 @@ class SlicedWasserstein {
   // Projects the transformed samples on axis p and sorts them: afterwards order(p) lists sample indices by
   // (projection, index), projections_ the projections in that order.
   void sort_projections(std::size_t p);
-  // Re-sorts order(p) by insertion from the previous call's order, unless that would move more than `budget`
-  // samples; false then, with order(p) some permutation.
-  bool insertion_sort(std::uint32_t* ranked, std::size_t budget);
   // Ranks values (any NaN ranks after +inf) into sorted and order by the vector kernel.
   void rank_sort(const double* values, double* sorted, std::uint32_t* order);
   std::uint32_t* order(std::size_t p) { return orders_.data() + p * base_.size(); }
@@ -55,12 +52,16 @@ class SlicedWasserstein {
   std::vector<Vector3> axes_;
   std::vector<double> sorted_targets_;  // [axis][rank]
   std::vector<Vector3> transformed_;    // normalize(M s_k)
+  std::vector<double> coordinates_;     // the same as three arrays: all x, all y, all z
   std::vector<double> lengths_;         // |M s_k|
   std::vector<double> values_;          // projections on the current axis, by sample
   std::vector<double> keys_;            // values_ with NaN as +inf, when there is a NaN
+  std::vector<double> rerank_keys_;     // the re-rank's scratch: projections in the last order, padded
+  std::vector<std::uint32_t> rerank_order_;  // ... and the new order until it is checked
   std::vector<double> projections_;     // sorted projections on the current axis
-  std::vector<Vector3> signed_axes_;    // gradient(): per sample, sum over axes of sign * axis
-  std::vector<double> signed_projections_;  // gradient(): per sample, sum over axes of sign * projection
+  std::vector<double> signed_sums_;     // gradient(): per sample, sums over axes of sign * axis (all x, y, z) and
+                                        // of sign * projection
+  std::vector<double> signs_;           // gradient(): the current axis' signs, by sample
   std::vector<std::uint32_t> orders_;   // [axis][rank]: sample indices by projection, from the last call
   std::vector<bool> ordered_;           // per axis: whether orders_ comes from a previous call
 };

@@ -79,6 +79,86 @@ TEST_CASE("The projection sort orders by (key, index) in every kernel set, any l
   }
 }
 
+// The reference order of keys, shuffled within consecutive blocks of `block` places: no inversion is
+// further apart than block - 1.
+static std::vector<std::uint32_t> near_order(const std::vector<double>& keys, std::size_t block, std::uint64_t seed) {
+  std::vector<double> unused;
+  std::vector<std::uint32_t> order;
+  reference_sort(keys, keys, unused, order);
+  std::mt19937_64 random(seed);
+  for (std::size_t first = 0; first < order.size(); first += block)
+    std::shuffle(order.begin() + std::ptrdiff_t(first),
+                 order.begin() + std::ptrdiff_t(std::min(order.size(), first + block)), random);
+  return order;
+}
+
+TEST_CASE("The projection re-rank gives the order by (key, index) or declines, in every kernel set", "[ltc][kernels]") {
+  for (const KernelSet set : pbrfit::kernel_sets_available()) {
+    const auto sort = pbrfit::ltc::detail::projection_sort(set);
+    for (const std::size_t n : {1u, 2u, 7u, 9u, 31u, 127u, 128u, 129u, 300u}) {
+      std::vector<double> scratch(pbrfit::ltc::detail::rerank_scratch(n));
+      std::vector<std::uint32_t> order_scratch(n);
+      for (const std::uint64_t seed : {1u, 2u, 3u}) {
+        std::mt19937_64 random(seed);
+        std::normal_distribution<double> normal;
+        std::vector<double> distinct(n);
+        for (double& key : distinct) key = normal(random);
+        std::vector<double> tied = keys_of(n, seed);
+        for (double& key : tied)  // no NaN reaches a re-rank; infinities may
+          if (std::isnan(key)) key = 0.0;
+        for (const bool with_ties : {false, true}) {
+          const std::vector<double>& keys = with_ties ? tied : distinct;
+          std::vector<double> expected_sorted;
+          std::vector<std::uint32_t> expected_order;
+          reference_sort(keys, keys, expected_sorted, expected_order);
+          for (const std::size_t block : {1u, 2u, 9u, 17u, 33u, 64u, 300u}) {
+            const std::vector<std::uint32_t> previous = near_order(keys, block, seed);
+            std::vector<std::uint32_t> order = previous;
+            std::vector<double> sorted(n, -1.0);
+            const bool done = sort.rerank(keys.data(), n, order.data(), sorted.data(), scratch.data(),
+                                          order_scratch.data());
+            CAPTURE(pbrfit::kernel_set_name(set), n, seed, with_ties, block);
+            if (done) {
+              CHECK(order == expected_order);
+              CHECK(std::memcmp(sorted.data(), expected_sorted.data(), n * sizeof(double)) == 0);
+            } else {
+              CHECK(order == previous);  // declined: the last order is kept for the full ranking
+            }
+            // Distinct keys whose inversions are at most 32 places apart always fit a window.
+            if (!with_ties && block <= 33) CHECK(done);
+          }
+        }
+      }
+    }
+  }
+}
+
+TEST_CASE("The projection re-rank declines one sample moved further than its widest window", "[ltc][kernels]") {
+  for (const KernelSet set : pbrfit::kernel_sets_available()) {
+    const auto sort = pbrfit::ltc::detail::projection_sort(set);
+    const std::size_t n = 128;
+    std::vector<double> keys(n);
+    for (std::size_t k = 0; k < n; ++k) keys[k] = double(k);
+    std::vector<double> scratch(pbrfit::ltc::detail::rerank_scratch(n)), sorted(n);
+    std::vector<std::uint32_t> order_scratch(n);
+    for (const std::size_t distance : {1u, 8u, 9u, 16u, 17u, 32u, 33u, 100u}) {
+      // The identity with the sample of rank 10 moved `distance` places later.
+      std::vector<std::uint32_t> order(n);
+      std::iota(order.begin(), order.end(), 0u);
+      std::rotate(order.begin() + 10, order.begin() + 11, order.begin() + 11 + std::ptrdiff_t(distance));
+      const std::vector<std::uint32_t> previous = order;
+      const bool done = sort.rerank(keys.data(), n, order.data(), sorted.data(), scratch.data(), order_scratch.data());
+      CAPTURE(pbrfit::kernel_set_name(set), distance);
+      CHECK(done == (distance <= 32));
+      if (done) {
+        for (std::size_t r = 0; r < n; ++r) CHECK(order[r] == r);
+      } else {
+        CHECK(order == previous);
+      }
+    }
+  }
+}
+
 TEST_CASE("Sliced Wasserstein pairs tied projections by index, whatever the previous matrix", "[ltc]") {
   // Base samples in mirrored pairs (x, y, z) and (-x, y, z); m keeps the mirror, so on the axes without an x
   // component each pair's projections tie exactly. The targets sit just above and just below each pair, so
@@ -103,7 +183,7 @@ TEST_CASE("Sliced Wasserstein pairs tied projections by index, whatever the prev
     Matrix3 expected;
     const double expected_value = fresh.gradient(m, expected);
     const double expected_distance = fresh.distance(m);
-    // Small steps away and back (insertion sorts) and far matrices (the vector ranking), then m again.
+    // Small steps away and back (re-ranks) and far matrices (the full ranking), then m again.
     for (const Matrix3& detour : {Matrix3(1.001 * m), Matrix3(m + 0.01 * far), Matrix3(m + 0.3 * far), far}) {
       pbrfit::ltc::SlicedWasserstein used(targets, base, axes);
       Matrix3 ignored, gradient;
