@@ -8,6 +8,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "fan_points.hpp"
+#include "pbrfit/core/kernel_set.hpp"
 #include "pbrfit/core/random_stream.hpp"
 #include "pbrfit/integrate/adaptive_cubature.hpp"
 #include "pbrfit/integrate/gauss_kronrod.hpp"
@@ -105,23 +107,15 @@ class FanIntegrand {
 
  private:
   static constexpr std::size_t line_points = integrate::gauss_kronrod::kronrod_size;
+  static_assert(line_points <= detail::fan_line_points);
 
   void points(double s_of_fan, const double* tau, std::size_t n, double* out) const {
     const std::size_t k = std::min(triangles_.size() - 1, static_cast<std::size_t>(s_of_fan));
     const FanTriangle& t = triangles_[k];
-    const double s = s_of_fan - double(k);
+    const detail::FanLine line{t.apex, t.from, t.edge, normal_, t.double_area, s_of_fan - double(k)};
     std::array<Vector3, line_points> directions;
     std::array<double, line_points> solid_angle, jacobian, value;
-    for (std::size_t i = 0; i < n; ++i) {
-      const double tau2 = tau[i] * tau[i], t4 = tau2 * tau2;
-      const Vector3 point = t.apex + t4 * (t.from + s * t.edge - t.apex);
-      const double length2 = point.squaredNorm();
-      const double length = std::sqrt(length2);
-      directions[i] = point / length;
-      solid_angle[i] = std::abs(normal_.dot(point)) / (length2 * length);
-      // dA = double_area * t dt ds with t = tau^4: dt = 4 tau^3 dtau.
-      jacobian[i] = t.double_area * t4 * 4.0 * tau2 * tau[i];
-    }
+    detail::fan_points(active_kernel_set())(line, tau, n, directions.data(), solid_angle.data(), jacobian.data());
     lobe_.value_many(std::span(directions.data(), n), std::span(value.data(), n));
     for (std::size_t i = 0; i < n; ++i) out[i] = value[i] * solid_angle[i] * jacobian[i];
   }

@@ -7,6 +7,9 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstring>
+#if defined(__AVX512F__)
+#include <immintrin.h>
+#endif
 #include <limits>
 #include <utility>
 
@@ -26,6 +29,72 @@ constexpr int W = 2;
 using Doubles = double __attribute__((vector_size(W * sizeof(double))));
 using Counts = std::int64_t __attribute__((vector_size(W * sizeof(std::int64_t))));  // comparisons give -1 / 0
 
+// How many of keys[from .. to) are below own in each lane (OrEqual: at or below), and how many of the windows'
+// keys v[-window .. -1] and v[1 .. window] are below own. With AVX-512 a comparison gives a mask that adds
+// one where it is set (GCC 12 widens a vector-extension mask to a vector and subtracts it instead: twice the
+// instructions); elsewhere the vector extensions' -1 / 0 lanes are subtracted.
+#if defined(__AVX512F__)
+template <bool OrEqual>
+Counts count_below(const double* keys, std::size_t from, std::size_t to, Doubles own) {
+  constexpr int predicate = OrEqual ? _CMP_GE_OQ : _CMP_GT_OQ;  // own >= key, own > key
+  const __m512d o = (__m512d)own;
+  const __m512i one = _mm512_set1_epi64(1);
+  // Four counters, so that consecutive comparisons do not wait on one another.
+  __m512i a = _mm512_setzero_si512(), b = a, c = a, d = a;
+  std::size_t j = from;
+  for (; j + 4 <= to; j += 4) {
+    a = _mm512_mask_add_epi64(a, _mm512_cmp_pd_mask(o, _mm512_set1_pd(keys[j]), predicate), a, one);
+    b = _mm512_mask_add_epi64(b, _mm512_cmp_pd_mask(o, _mm512_set1_pd(keys[j + 1]), predicate), b, one);
+    c = _mm512_mask_add_epi64(c, _mm512_cmp_pd_mask(o, _mm512_set1_pd(keys[j + 2]), predicate), c, one);
+    d = _mm512_mask_add_epi64(d, _mm512_cmp_pd_mask(o, _mm512_set1_pd(keys[j + 3]), predicate), d, one);
+  }
+  for (; j < to; ++j) a = _mm512_mask_add_epi64(a, _mm512_cmp_pd_mask(o, _mm512_set1_pd(keys[j]), predicate), a, one);
+  return (Counts)_mm512_add_epi64(_mm512_add_epi64(a, b), _mm512_add_epi64(c, d));
+}
+
+template <int Window>
+Counts count_window(const double* v, Doubles own) {
+  const __m512d o = (__m512d)own;
+  const __m512i one = _mm512_set1_epi64(1);
+  __m512i a = _mm512_setzero_si512(), b = a;
+  for (int d = 1; d <= Window; ++d) {
+    a = _mm512_mask_add_epi64(a, _mm512_cmp_pd_mask(o, _mm512_loadu_pd(v - d), _CMP_GT_OQ), a, one);
+    b = _mm512_mask_add_epi64(b, _mm512_cmp_pd_mask(o, _mm512_loadu_pd(v + d), _CMP_GT_OQ), b, one);
+  }
+  return (Counts)_mm512_add_epi64(a, b);
+}
+#else
+template <bool OrEqual>
+Counts count_below(const double* keys, std::size_t from, std::size_t to, Doubles own) {
+  Counts a = {}, b = {};
+  std::size_t j = from;
+  for (; j + 2 <= to; j += 2) {
+    if constexpr (OrEqual) {
+      a -= (Counts)(keys[j] <= own);
+      b -= (Counts)(keys[j + 1] <= own);
+    } else {
+      a -= (Counts)(keys[j] < own);
+      b -= (Counts)(keys[j + 1] < own);
+    }
+  }
+  for (; j < to; ++j) a -= OrEqual ? (Counts)(keys[j] <= own) : (Counts)(keys[j] < own);
+  return a + b;
+}
+
+template <int Window>
+Counts count_window(const double* v, Doubles own) {
+  Counts a = {}, b = {};
+  for (int d = 1; d <= Window; ++d) {
+    Doubles before, after;
+    std::memcpy(&before, v - d, sizeof before);
+    std::memcpy(&after, v + d, sizeof after);
+    a -= (Counts)(before < own);
+    b -= (Counts)(after < own);
+  }
+  return a + b;
+}
+#endif
+
 // The ranks of the W indices first .. first + W - 1 (lanes past n hold +inf and are not used).
 Counts ranks_of(const double* keys, std::size_t n, std::size_t first) {
   const std::size_t count = n - first < std::size_t(W) ? n - first : std::size_t(W);
@@ -36,27 +105,16 @@ Counts ranks_of(const double* keys, std::size_t n, std::size_t first) {
     for (int l = 0; l < W; ++l)
       own[l] = std::size_t(l) < count ? keys[first + std::size_t(l)] : std::numeric_limits<double>::infinity();
   }
-  // Two counters, so that consecutive comparisons do not wait on one another.
-  Counts a = {}, b = {};
-  std::size_t j = 0;
-  for (; j + 1 < first; j += 2) {  // smaller indices: an equal key ranks before
-    a -= (Counts)(keys[j] <= own);
-    b -= (Counts)(keys[j + 1] <= own);
-  }
-  for (; j < first; ++j) a -= (Counts)(keys[j] <= own);
+  // Smaller indices: an equal key ranks before; larger ones: only a smaller key.
+  Counts below = count_below<true>(keys, 0, first, own) + count_below<false>(keys, first + count, n, own);
   Counts lane = {};
   for (int l = 0; l < W; ++l) lane[l] = l;
-  for (; j < first + count; ++j) {  // the group itself: an equal key ranks before where its index is smaller
+  for (std::size_t j = first; j < first + count; ++j) {  // the group itself: equal keys rank by index
     const double other = keys[j];
     const Counts position = Counts{} + std::int64_t(j - first);
-    a -= (Counts)(other < own) | ((Counts)(other == own) & (Counts)(position < lane));
+    below -= (Counts)(other < own) | ((Counts)(other == own) & (Counts)(position < lane));
   }
-  for (; j + 1 < n; j += 2) {  // larger indices: only a smaller key ranks before
-    a -= (Counts)(keys[j] < own);
-    b -= (Counts)(keys[j + 1] < own);
-  }
-  for (; j < n; ++j) a -= (Counts)(keys[j] < own);
-  return a + b;
+  return below;
 }
 
 // x moved up by Shift lanes, the lowest Shift lanes taken from fill.
@@ -84,17 +142,9 @@ Counts window_ranks(const double* v, std::size_t n, std::size_t first) {
   Doubles own;
   std::memcpy(&own, v + first, sizeof own);
   for (std::size_t l = n - first; l < std::size_t(W); ++l) own[l] = std::numeric_limits<double>::quiet_NaN();
-  Counts a = {}, b = {};
-  for (int d = 1; d <= Window; ++d) {
-    Doubles before, after;
-    std::memcpy(&before, v + first - d, sizeof before);
-    std::memcpy(&after, v + first + d, sizeof after);
-    a -= (Counts)(before < own);
-    b -= (Counts)(after < own);
-  }
   Counts lane = {};
   for (int l = 0; l < W; ++l) lane[l] = l;
-  return a + b + lane + (std::int64_t(first) - Window);
+  return count_window<Window>(v + first, own) + lane + (std::int64_t(first) - Window);
 }
 
 // rerank with the window chosen: ranks, their check, and the new order.

@@ -66,7 +66,7 @@ wait_for running 250
 grep -q "^scheduler: *slurm job $id, restart 1" status.txt || fail "the requeued run does not say it is restart 1"
 scancel --signal=USR1 "$id"
 wait_for interrupted
-wait_for complete 768
+wait_for complete 1536
 while [[ -n "$(job_state)" && "$(job_state)" != COMPLETED ]]; do sleep 0.2; done
 cat "$log"
 grep -q "restart 2" "$log" || fail "the job did not requeue itself after exit 75"
@@ -76,7 +76,7 @@ grep -q "Exited with exit code 75" "$log" || fail "the requeued run's ranks did 
 grep -q "^pbrfit: exit code 75" "$log" || fail "the batch script did not see exit code 75 after SIGUSR1"
 [[ $(grep -c "interrupted: checkpoint saved to $WORK/result.h5.checkpoint" "$log") -eq 2 ]] ||
   fail "the two interrupted runs did not both save a checkpoint"
-[[ $(grep -c "resuming: [1-9][0-9]* of 768 work items already done" "$log") -eq 2 ]] || fail "the runs did not resume"
+[[ $(grep -c "resuming: [1-9][0-9]* of 1536 work items already done" "$log") -eq 2 ]] || fail "the runs did not resume"
 "$PBRFIT" status result.h5 | grep -q "^scheduler: *slurm job $id, restart 2" || fail "the final run is not restart 2"
 expect_identical reference.h5 result.h5 /dfg
 echo "PASS"

@@ -1,16 +1,21 @@
 #include <catch2/catch_test_macros.hpp>
 
 #include <cmath>
+#include <cstring>
 #include <numbers>
+#include <random>
 #include <vector>
 
+#include "fan_points.hpp"
 #include "pbrfit/brdf/brdf_families.hpp"
 #include "pbrfit/brdf/ggx_lobe.hpp"
+#include "pbrfit/core/kernel_set.hpp"
 #include "pbrfit/ltc/distribution.hpp"
 #include "pbrfit/ltc/polygon_integral.hpp"
 #include "pbrfit/ltc/polygon_lighting.hpp"
 
 using namespace pbrfit::ltc;
+using pbrfit::KernelSet;
 using pbrfit::Matrix3;
 using pbrfit::Vector3;
 
@@ -103,4 +108,41 @@ TEST_CASE("A quad's solid angle is that of its part above the horizon", "[ltc]")
   // A wall at x = 1 reaching from z = -1 to 1: half of it is above the horizon.
   const Quad wall{{Vector3(1, 1, 1), Vector3(1, -1, 1), Vector3(1, -1, -1), Vector3(1, 1, -1)}};
   CHECK(std::abs(lobe_quad_integral(*lambert, wall, Vector3::UnitZ()).solid_angle - std::numbers::pi / 3.0) < 1e-12);
+}
+
+TEST_CASE("The fan integrand's points are the scalar formula's, bit for bit, in every kernel set", "[ltc][kernels]") {
+  // The points of polygon_lighting.cpp's fan integrand one at a time with Eigen, as before they ran as vector
+  // code: x = apex + t ((from + s edge) - apex), t = tau^4.
+  std::mt19937_64 random(11);
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  const auto vector = [&] { return Vector3(uniform(random), uniform(random), 0.5 + uniform(random)); };
+  for (int trial = 0; trial < 50; ++trial) {
+    const Vector3 apex = vector(), from = vector(), edge = vector() - from;
+    const Vector3 normal = vector().normalized();
+    const double double_area = 0.1 + std::abs(uniform(random)), s = 0.5 * (1.0 + uniform(random));
+    std::vector<double> tau(pbrfit::ltc::detail::fan_line_points);
+    for (double& u : tau) u = 0.5 * (1.0 + uniform(random));
+    const std::size_t n = 1 + std::size_t(trial) % tau.size();
+    std::vector<Vector3> expected_directions(n);
+    std::vector<double> expected_solid(n), expected_jacobian(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const double tau2 = tau[i] * tau[i], t4 = tau2 * tau2;
+      const Vector3 point = apex + t4 * (from + s * edge - apex);
+      const double length2 = point.squaredNorm();
+      const double length = std::sqrt(length2);
+      expected_directions[i] = point / length;
+      expected_solid[i] = std::abs(normal.dot(point)) / (length2 * length);
+      expected_jacobian[i] = double_area * t4 * 4.0 * tau2 * tau[i];
+    }
+    for (const KernelSet set : pbrfit::kernel_sets_available()) {
+      std::vector<Vector3> directions(n);
+      std::vector<double> solid(n), jacobian(n);
+      pbrfit::ltc::detail::fan_points(set)({apex, from, edge, normal, double_area, s}, tau.data(), n,
+                                           directions.data(), solid.data(), jacobian.data());
+      CAPTURE(pbrfit::kernel_set_name(set), trial, n);
+      CHECK(std::memcmp(directions.data(), expected_directions.data(), n * sizeof(Vector3)) == 0);
+      CHECK(std::memcmp(solid.data(), expected_solid.data(), n * sizeof(double)) == 0);
+      CHECK(std::memcmp(jacobian.data(), expected_jacobian.data(), n * sizeof(double)) == 0);
+    }
+  }
 }
