@@ -27,8 +27,7 @@ SlicedWasserstein::SlicedWasserstein(std::span<const Vector3> targets, std::vect
   if (n > std::numeric_limits<std::uint32_t>::max()) {
     throw std::invalid_argument("ltc: sliced Wasserstein takes fewer than 2^32 samples");
   }
-  transformed_.resize(n);
-  coordinates_.resize(3 * n);
+  transformed_.resize(3 * n);
   lengths_.resize(n);
   values_.resize(n);
   keys_.resize(n);
@@ -47,12 +46,18 @@ SlicedWasserstein::SlicedWasserstein(std::span<const Vector3> targets, std::vect
 }
 
 void SlicedWasserstein::transform_base(const Matrix3& m) {
-  for (std::size_t k = 0; k < base_.size(); ++k) {
+  const std::size_t n = base_.size();
+  for (std::size_t k = 0; k < n; ++k) {
     const Vector3 image = m * base_[k];
     lengths_[k] = image.norm();
-    transformed_[k] = image / lengths_[k];
-    for (int c = 0; c < 3; ++c) coordinates_[c * base_.size() + k] = transformed_[k][c];
+    const Vector3 direction = image / lengths_[k];
+    for (int c = 0; c < 3; ++c) transformed_[std::size_t(c) * n + k] = direction[c];
   }
+}
+
+Vector3 SlicedWasserstein::transformed(std::size_t k) const {
+  const std::size_t n = base_.size();
+  return {transformed_[k], transformed_[n + k], transformed_[2 * n + k]};
 }
 
 void SlicedWasserstein::rank_sort(const double* values, double* sorted, std::uint32_t* order) {
@@ -69,7 +74,7 @@ void SlicedWasserstein::rank_sort(const double* values, double* sorted, std::uin
 void SlicedWasserstein::sort_projections(std::size_t p) {
   const std::size_t n = base_.size();
   const detail::ProjectionSort sort = detail::projection_sort(active_kernel_set());
-  const double* w = coordinates_.data();
+  const double* w = transformed_.data();
   const bool has_nan = sort.project(axes_[p].data(), w, w + n, w + 2 * n, n, values_.data());
   // A re-rank from the last order never sees a NaN, so that its comparisons stay a total order.
   if (ordered_[p] && !has_nan &&
@@ -123,7 +128,7 @@ double SlicedWasserstein::gradient(const Matrix3& m, Matrix3& gradient) {
   double sum[3][3] = {};
   for (std::size_t k = 0; k < n; ++k) {
     const Vector3 signed_axis(signed_x[k], signed_y[k], signed_z[k]);
-    const Vector3 direction = (signed_axis - transformed_[k] * signed_projections[k]) / lengths_[k];
+    const Vector3 direction = (signed_axis - transformed(k) * signed_projections[k]) / lengths_[k];
     for (int r = 0; r < 3; ++r)
       for (int c = 0; c < 3; ++c) sum[r][c] += direction[r] * base_[k][c];
   }

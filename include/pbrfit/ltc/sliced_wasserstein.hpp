@@ -41,6 +41,7 @@ class SlicedWasserstein {
 
  private:
   void transform_base(const Matrix3& m);
+  Vector3 transformed(std::size_t k) const;  // normalize(M s_k) of the last transform_base
   // Projects the transformed samples on axis p and sorts them: afterwards order(p) lists sample indices by
   // (projection, index), projections_ the projections in that order.
   void sort_projections(std::size_t p);
@@ -51,8 +52,7 @@ class SlicedWasserstein {
   std::vector<Vector3> base_;
   std::vector<Vector3> axes_;
   std::vector<double> sorted_targets_;  // [axis][rank]
-  std::vector<Vector3> transformed_;    // normalize(M s_k)
-  std::vector<double> coordinates_;     // the same as three arrays: all x, all y, all z
+  std::vector<double> transformed_;     // normalize(M s_k) as three arrays: all x, all y, all z
   std::vector<double> lengths_;         // |M s_k|
   std::vector<double> values_;          // projections on the current axis, by sample
   std::vector<double> keys_;            // values_ with NaN as +inf, when there is a NaN
