@@ -170,17 +170,53 @@ inline void with_arithmetic(Opcode op, Visit visit) {
   }
 }
 
-// A fused pair (block_schedule.hpp): the first operator's value stays in a register.
+// A fused pair's operand: a block read row by row, or a constant read once into a register.
 template <class T>
-void run_fused_block(Opcode op, Opcode second, bool intermediate_left, const T* a, const T* b, const T* c,
-                     T* __restrict out, std::size_t n) {
+struct RowValues {
+  const T* values;
+  T operator[](std::size_t i) const { return values[i]; }
+};
+template <class T>
+struct RepeatedValue {
+  T value;
+  T operator[](std::size_t) const { return value; }
+};
+
+template <class T, class A, class B, class C, class F, class G>
+inline void fused_rows(A a, B b, C c, bool intermediate_left, T* __restrict out, std::size_t n, F f, G g) {
+  if (intermediate_left) {
+    for (std::size_t i = 0; i < n; ++i) out[i] = g(f(a[i], b[i]), c[i]);
+  } else {
+    for (std::size_t i = 0; i < n; ++i) out[i] = g(c[i], f(a[i], b[i]));
+  }
+}
+
+// Calls visit with the operand as RowValues, or as RepeatedValue when it is a constant's block.
+template <class T, class Visit>
+inline void with_operand(BlockOperand<T> operand, Visit visit) {
+  if (operand.constant) {
+    visit(RepeatedValue<T>{operand.values[0]});
+  } else {
+    visit(RowValues<T>{operand.values});
+  }
+}
+
+// A fused pair (block_schedule.hpp): the first operator's value stays in a register, and so does a
+// constant operand (the third, or one of the first two; both first two constant is rare and reads blocks).
+template <class T>
+void run_fused_block(Opcode op, Opcode second, bool intermediate_left, BlockOperand<T> a, BlockOperand<T> b,
+                     BlockOperand<T> c, T* __restrict out, std::size_t n) {
   with_arithmetic<T>(op, [&](auto f) {
     with_arithmetic<T>(second, [&](auto g) {
-      if (intermediate_left) {
-        for (std::size_t i = 0; i < n; ++i) out[i] = g(f(a[i], b[i]), c[i]);
-      } else {
-        for (std::size_t i = 0; i < n; ++i) out[i] = g(c[i], f(a[i], b[i]));
-      }
+      with_operand<T>(c, [&](auto third) {
+        if (b.constant && !a.constant) {
+          fused_rows<T>(RowValues<T>{a.values}, RepeatedValue<T>{b.values[0]}, third, intermediate_left, out, n, f, g);
+        } else if (a.constant && !b.constant) {
+          fused_rows<T>(RepeatedValue<T>{a.values[0]}, RowValues<T>{b.values}, third, intermediate_left, out, n, f, g);
+        } else {
+          fused_rows<T>(RowValues<T>{a.values}, RowValues<T>{b.values}, third, intermediate_left, out, n, f, g);
+        }
+      });
     });
   });
 }
@@ -229,8 +265,8 @@ void run_schedule(const BlockSchedule<T>& schedule, std::size_t rows, std::size_
       const auto& step = schedule.steps[s];
       const auto& [a, b, c] = step.operands;
       if (step.second != Opcode::identity) {
-        run_fused_block<T>(step.op, step.second, step.intermediate_left, a.at(first), b.at(first), c.at(first),
-                           step.out, n);
+        run_fused_block<T>(step.op, step.second, step.intermediate_left, {a.at(first), a.constant},
+                           {b.at(first), b.constant}, {c.at(first), c.constant}, step.out, n);
       } else {
         run_block<T>(step.op, {a.at(first), a.constant}, {b.at(first), b.constant}, c.at(first), step.out, n);
       }

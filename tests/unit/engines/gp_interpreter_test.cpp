@@ -195,6 +195,107 @@ TEST_CASE("Arithmetic pairs fuse only where the next step alone reads the result
   }
 }
 
+namespace {
+
+// The schedule of `program` over the mixed inputs, with the slot memory it points into.
+struct ScheduledProgram {
+  std::vector<float> slots = std::vector<float>(max_program_length * block_rows);
+  std::vector<float> constants = std::vector<float>(max_program_length * max_operands * block_rows);
+  detail::BlockSchedule<float> schedule;
+
+  explicit ScheduledProgram(const Program& program) {
+    const Eigen::ArrayXXf columns = mixed_inputs().inputs.cast<float>();
+    schedule = detail::schedule_blocks<float>(program, columns, slots, constants, block_rows);
+  }
+  std::size_t slots_used() const {
+    std::vector<const float*> outs;
+    for (std::size_t s = 0; s < schedule.step_count; ++s) outs.push_back(schedule.steps[s].out);
+    std::sort(outs.begin(), outs.end());
+    return static_cast<std::size_t>(std::unique(outs.begin(), outs.end()) - outs.begin());
+  }
+  // Whether some step writes one of the operands it reads (its arity's, and a fused pair's third).
+  bool writes_an_operand() const {
+    for (std::size_t s = 0; s < schedule.step_count; ++s) {
+      const auto& step = schedule.steps[s];
+      const int read = step.second != Opcode::identity ? 3 : arity(step.op);
+      for (int j = 0; j < read; ++j)
+        if (step.operands[static_cast<std::size_t>(j)].base == step.out) return true;
+    }
+    return false;
+  }
+};
+
+}  // namespace
+
+// A result's slot is reused once no later step reads it, so a tree needs about as many slots as it is deep.
+TEST_CASE("Steps reuse the slots of results no later step reads, never writing an operand", "[gp]") {
+  const Argument x = input_argument(0);
+  const Argument y = input_argument(1);
+  {
+    ProgramBuilder b;  // a chain of 40 steps, each reading the last: two slots, alternately
+    Argument chain = x;
+    for (int i = 0; i < 40; ++i) chain = b.append(i % 2 ? Opcode::abs : Opcode::neg, {chain});
+    const Program program = b.finish(chain);
+    const ScheduledProgram scheduled(program);
+    CHECK(scheduled.schedule.step_count == 40);
+    CHECK(scheduled.slots_used() == 2);
+    CHECK_FALSE(scheduled.writes_an_operand());
+    CHECK(disagreements<float>(program, 0.0) == 0);
+  }
+  {
+    // A balanced tree of 31 min/max steps over 32 leaf steps (depth 5), in post-order: the deepest step
+    // of the last subtree runs while 4 results wait, one per level above it, on its 2 leaves, and writes a
+    // slot of its own: 7 slots for 63 steps.
+    ProgramBuilder post;
+    auto leaf = [&](std::size_t i) { return post.append(Opcode::neg, {i % 2 ? x : y}); };
+    auto tree = [&](auto&& self, std::size_t first, std::size_t count, bool use_min) -> Argument {
+      if (count == 1) return leaf(first);
+      const Argument left = self(self, first, count / 2, !use_min);
+      const Argument right = self(self, first + count / 2, count / 2, !use_min);
+      return post.append(use_min ? Opcode::min : Opcode::max, {left, right});
+    };
+    const Program program = post.finish(tree(tree, 0, 32, true));
+    const ScheduledProgram scheduled(program);
+    CHECK(scheduled.schedule.step_count == 63);
+    CHECK(scheduled.slots_used() == 7);
+    CHECK_FALSE(scheduled.writes_an_operand());
+    CHECK(disagreements<float>(program, 0.0) == 0);
+  }
+  for (std::uint64_t seed = 0; seed < 200; ++seed) {  // random programs, fused pairs among them
+    CAPTURE(seed);
+    const ScheduledProgram scheduled(gp_test::random_program(gp_test::wide_shape(3), seed, 2));
+    CHECK_FALSE(scheduled.writes_an_operand());
+    CHECK(scheduled.slots_used() <= scheduled.schedule.step_count);
+  }
+}
+
+// A fused pair reads a constant operand once, wherever it stands: the same values, bitwise.
+TEST_CASE("Fused pairs with constant operands give the scalar semantics in every kernel set", "[gp]") {
+  const Opcode arithmetic[] = {Opcode::add, Opcode::sub, Opcode::mul, Opcode::div};
+  const Argument x = input_argument(0);
+  const Argument y = input_argument(1);
+  const Argument z = input_argument(2);
+  const Argument k = constant_argument(-0.625);
+  const Argument m = constant_argument(1.75);
+  // (a, b, c) of second(first(a, b), c): constants first, second, third and in pairs.
+  const Argument patterns[][3] = {{k, y, z}, {x, k, z}, {x, y, k}, {k, y, m}, {x, k, m}, {k, m, z}};
+  for (const auto set : pbrfit::kernel_sets_available())
+    for (const Opcode first : arithmetic)
+      for (const Opcode second : arithmetic)
+        for (const bool left : {true, false})
+          for (const auto& pattern : patterns) {
+            const gp_test::KernelSetScope scope(set);
+            ProgramBuilder b;
+            const Argument inner = b.append(first, {pattern[0], pattern[1]});
+            const Program program =
+                b.finish(left ? b.append(second, {inner, pattern[2]}) : b.append(second, {pattern[2], inner}));
+            CAPTURE(pbrfit::kernel_set_name(set), name(first), name(second), left, &pattern - patterns);
+            CHECK(scheduled_steps(program) == 1);
+            CHECK(disagreements<float>(program, 0.0) == 0);
+            CHECK(disagreements<double>(program, 0.0) == 0);
+          }
+}
+
 TEST_CASE("Introns are skipped and pruning keeps the function bitwise", "[gp]") {
   ProgramBuilder builder;
   const Argument x = input_argument(0);
