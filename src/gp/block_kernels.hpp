@@ -201,21 +201,19 @@ inline void with_operand(BlockOperand<T> operand, Visit visit) {
   }
 }
 
-// A fused pair (block_schedule.hpp): the first operator's value stays in a register, and so does a
-// constant operand (the third, or one of the first two; both first two constant is rare and reads blocks).
+// A fused pair (block_schedule.hpp): the first operator's value stays in a register, and so does any
+// constant operand.
 template <class T>
 void run_fused_block(Opcode op, Opcode second, bool intermediate_left, BlockOperand<T> a, BlockOperand<T> b,
                      BlockOperand<T> c, T* __restrict out, std::size_t n) {
   with_arithmetic<T>(op, [&](auto f) {
     with_arithmetic<T>(second, [&](auto g) {
-      with_operand<T>(c, [&](auto third) {
-        if (b.constant && !a.constant) {
-          fused_rows<T>(RowValues<T>{a.values}, RepeatedValue<T>{b.values[0]}, third, intermediate_left, out, n, f, g);
-        } else if (a.constant && !b.constant) {
-          fused_rows<T>(RepeatedValue<T>{a.values[0]}, RowValues<T>{b.values}, third, intermediate_left, out, n, f, g);
-        } else {
-          fused_rows<T>(RowValues<T>{a.values}, RowValues<T>{b.values}, third, intermediate_left, out, n, f, g);
-        }
+      with_operand<T>(a, [&](auto first) {
+        with_operand<T>(b, [&](auto middle) {
+          with_operand<T>(c, [&](auto third) {
+            fused_rows<T>(first, middle, third, intermediate_left, out, n, f, g);
+          });
+        });
       });
     });
   });

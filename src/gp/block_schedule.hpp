@@ -82,8 +82,8 @@ void fuse_pairs(BlockSchedule<T>& schedule, const std::array<std::uint8_t, max_p
 }
 
 // Gives each step's result, in step order, the slot freed most recently or else a new one; a slot is freed
-// once the last step reading its value has run, so results with disjoint lifetimes share a slot. A step's operands are freed after its own
-// slot is chosen, so `out` never aliases an operand. `slots` is where the schedule's slot pointers point,
+// once the last step reading its value has run, so results with disjoint lifetimes share a slot. A step's
+// operands are freed after its own slot is chosen, so `out` never aliases an operand. `slots` is where the schedule's slot pointers point,
 // block_size values per slot, indexed until now by the step that made them.
 template <class T>
 void reuse_slots(BlockSchedule<T>& schedule, T* slots, std::size_t block_size) {
