@@ -1,7 +1,8 @@
 // One operator over n <= block_rows values: out[i] = apply(op, a[i], b[i], c[i]) (semantics.hpp).
 // Arithmetic, comparisons, sqrt and rsqrt are plain loops the compiler vectorizes (bitwise the same in
-// every kernel set); other transcendentals use Eigen's vectorized functions, lane by lane the same
-// wherever a row sits. `out` never aliases an operand; operands may alias each other.
+// every kernel set); other transcendentals use Eigen's vectorized functions (and, in the avx2 and avx512
+// sets, glibc's for tan, asin, acos and atan: block_vector_math.hpp), lane by lane the same wherever a row
+// sits. `out` never aliases an operand; operands may alias each other.
 //
 // Included once by each kernel set's file (block_kernels_isa_<set>.cpp, compiled for that instruction
 // set), inside a namespace named by PBRFIT_KERNEL_ISA, so that the sets' copies never meet at link time;
@@ -18,6 +19,9 @@
 
 #include "block_kernel_sets.hpp"
 #include "pbrfit/gp/opcode.hpp"
+#if defined(PBRFIT_KERNEL_LIBMVEC)
+#include "block_vector_math.hpp"
+#endif
 
 namespace pbrfit::gp::detail::PBRFIT_KERNEL_ISA {
 
@@ -71,6 +75,9 @@ void transcendental_chunk(Opcode op, const T* a, const T* b, T* out) {
   const Eigen::Map<const Chunk, Eigen::Aligned64> x(a);
   Eigen::Map<Chunk, Eigen::Aligned64> y(out);
   constexpr T ln2 = std::numbers::ln2_v<T>;
+#if defined(PBRFIT_KERNEL_LIBMVEC)
+  if (libmvec_chunk<size>(op, a, out)) return;
+#endif
   switch (op) {
     case Opcode::exp:
       y = x.exp();

@@ -7,7 +7,8 @@
 //  - A process starts with the best set both its CPU and its build have; use_kernel_set() changes it (a
 //    job's ranks agree on the best set all of them have, runtime/mpi_session.hpp), before any kernel runs.
 //  - What may differ between sets, and only that: results of the kernels' transcendental functions (the
-//    vector exp, log, sin, cos, ... of Eigen, whose polynomials use FMA and whose lane counts differ).
+//    vector exp, log, sin, cos, ... of Eigen, whose polynomials use FMA and whose lane counts differ, and in
+//    the avx2 and avx512 sets glibc's vector tan, asin, acos and atan, whose code differs per set).
 //    Arithmetic (+ - * /, min, max, abs, comparisons) and sqrt are compiled without contraction into FMA, so
 //    they are bitwise the same in every set. On one machine every rank and thread uses the same set: results stay
 //    identical across ranks, threads and resumptions there.

@@ -458,6 +458,21 @@ TEST_CASE("Kernel sets differ from the generic one only in transcendentals, by a
   }
 }
 
+// block_vector_math.hpp: Eigen 3.4 computes tan, asin, acos and atan by the C library, one lane at a time,
+// which would give the generic set's values; the avx2 and avx512 sets take glibc's vector versions, whose
+// polynomials round differently somewhere in every one of them.
+TEST_CASE("The avx2 and avx512 sets compute tan, asin, acos and atan by vector code, not lane by lane", "[gp]") {
+  for (const auto set : pbrfit::kernel_sets_available()) {
+    if (set == pbrfit::KernelSet::generic) continue;
+    CAPTURE(pbrfit::kernel_set_name(set));
+    for (const Opcode op : {Opcode::tan, Opcode::asin, Opcode::acos, Opcode::atan}) {
+      CAPTURE(name(op));
+      CHECK(set_difference<float>(set, op).rows_differing > 0);
+      CHECK(set_difference<double>(set, op).rows_differing > 0);
+    }
+  }
+}
+
 namespace {
 
 // `dataset` with `shift` rows of zeros before its own.
