@@ -1,7 +1,9 @@
 #pragma once
 // Accumulates a block's residuals in double, in a fixed order (four interleaved partial sums, combined at
-// the end), so the compiler may vectorize while the result stays bitwise reproducible.
-#include <array>
+// the end): lane k of the partial sums takes rows k, k + 4, k + 8, ... of every block, so the four lanes
+// run as vector operations while the result stays bitwise reproducible.
+#include <Eigen/Core>
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 
@@ -13,12 +15,28 @@ class ErrorSums {
  public:
   template <class T>
   void add_block(const T* values, const double* target, const double* weights, const double* scale, std::size_t n) {
+    // The partial sums as local vectors: kept in members, each row's sums would be stored through `this`
+    // (which might alias the rows read) and the loop would stay scalar.
+    Lanes squares = squares_;
+    Lanes max_abs = max_abs_;
     std::size_t i = 0;
     for (; i + lanes <= n; i += lanes) {
-      for (std::size_t k = 0; k < lanes; ++k)
-        add(k, static_cast<double>(values[i + k]), target[i + k], weights[i + k], scale[i + k]);
+      const Lanes residual = Eigen::Map<const Eigen::Array<T, lanes, 1>>(values + i).template cast<double>() -
+                             Eigen::Map<const Lanes>(target + i);
+      const Lanes scaled = residual * Eigen::Map<const Lanes>(scale + i);
+      squares += Eigen::Map<const Lanes>(weights + i) * scaled * scaled;
+      // Magnitudes are never -0 and a NaN or infinite residual makes the squares non-finite, when error()
+      // ignores max_abs: any max of the two gives the same error.
+      max_abs = max_abs.max(residual.abs());
     }
-    for (; i < n; ++i) add(0, static_cast<double>(values[i]), target[i], weights[i], scale[i]);
+    for (; i < n; ++i) {  // a block's last rows beyond a multiple of 4, into lane 0
+      const double residual = static_cast<double>(values[i]) - target[i];
+      const double scaled = residual * scale[i];
+      squares[0] += weights[i] * scaled * scaled;
+      max_abs[0] = std::max(max_abs[0], std::abs(residual));
+    }
+    squares_ = squares;
+    max_abs_ = max_abs;
   }
 
   // The error under `measure` given the sum of the weights.
@@ -32,18 +50,11 @@ class ErrorSums {
   }
 
  private:
-  static constexpr std::size_t lanes = 4;
+  static constexpr int lanes = 4;
+  using Lanes = Eigen::Array<double, lanes, 1>;
 
-  void add(std::size_t k, double value, double target, double weight, double scale) {
-    const double residual = value - target;
-    const double scaled = residual * scale;
-    squares_[k] += weight * scaled * scaled;
-    const double magnitude = std::abs(residual);
-    max_abs_[k] = magnitude > max_abs_[k] ? magnitude : max_abs_[k];
-  }
-
-  std::array<double, lanes> squares_{};
-  std::array<double, lanes> max_abs_{};
+  Lanes squares_ = Lanes::Zero();
+  Lanes max_abs_ = Lanes::Zero();
 };
 
 }  // namespace pbrfit::gp::detail

@@ -2,9 +2,11 @@
 // sizes; a node is an operator, an input or a constant, as in a tree), evaluated over 12,800 rows of 10
 // uniform inputs in [-1, 1] on one core. Reports node-rows per second (tree nodes x rows / seconds) for
 // the batch interpreter (float and double) and the per-row tree walker, with arithmetic only (+ - * /)
-// and with transcendentals (+ - * / exp log sin cos sqrt), in every kernel set the machine has
-// (core/kernel_set.hpp).
-//   bench_gp_interpreter [expressions=1000] [walker_expressions=200] [repeats=3] [operators=all|arithmetic|transcendental]
+// with transcendentals (+ - * / exp log sin cos sqrt), and with genBRDF's trigonometric operators
+// (+ - * / tan asin acos atan: glibc's vector versions in the avx2 and avx512 sets, the C library's scalar
+// ones in the generic set), in every kernel set the machine has (core/kernel_set.hpp).
+//   bench_gp_interpreter [expressions=1000] [walker_expressions=200] [repeats=3]
+//                        [operators=all|arithmetic|transcendental|trigonometric]
 // The tree walker runs on the first walker_expressions expressions (it is ~30x slower); the rates are
 // per node-row, so they compare directly. Each measurement is the best of `repeats` passes.
 #include <algorithm>
@@ -164,8 +166,11 @@ int main(int argc, char** argv) {
   const std::vector<Opcode> arithmetic{Opcode::add, Opcode::sub, Opcode::mul, Opcode::div};
   const std::vector<Opcode> transcendental{Opcode::add, Opcode::sub, Opcode::mul, Opcode::div, Opcode::exp,
                                            Opcode::log, Opcode::sin, Opcode::cos, Opcode::sqrt};
+  const std::vector<Opcode> trigonometric{Opcode::add, Opcode::sub, Opcode::mul, Opcode::div,
+                                          Opcode::tan,  Opcode::asin, Opcode::acos, Opcode::atan};
   const auto arithmetic_set = random_expressions(count, arithmetic, 1);
   const auto transcendental_set = random_expressions(count, transcendental, 2);
+  const auto trigonometric_set = random_expressions(count, trigonometric, 3);
   std::printf("%zu expressions of 1..%zu nodes (mean %.1f), %zu rows, block %zu rows; walker on %zu expressions\n",
               count, max_nodes, node_rows(arithmetic_set, count) / row_count / static_cast<double>(count), row_count,
               block_rows, walker_count);
@@ -175,7 +180,9 @@ int main(int argc, char** argv) {
   for (std::size_t i = 0; i < kernel_sets.size(); ++i) std::printf("---|");
   std::printf("---|---|\n");
   const std::string operators = argc > 4 ? argv[4] : "all";
-  if (operators != "transcendental") report("arithmetic", arithmetic_set, walker_count, dataset, repeats);
-  if (operators != "arithmetic") report("transcendental", transcendental_set, walker_count, dataset, repeats);
+  const bool all = operators == "all";
+  if (all || operators == "arithmetic") report("arithmetic", arithmetic_set, walker_count, dataset, repeats);
+  if (all || operators == "transcendental") report("transcendental", transcendental_set, walker_count, dataset, repeats);
+  if (all || operators == "trigonometric") report("trigonometric", trigonometric_set, walker_count, dataset, repeats);
   return 0;
 }

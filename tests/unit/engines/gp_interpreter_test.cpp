@@ -375,6 +375,53 @@ TEST_CASE("Error measures: RMSE, max abs and relative, weighted", "[gp]") {
   CHECK(BatchInterpreter<double>(dataset).error(identity) == std::sqrt(2.0 / 4.0));
 }
 
+namespace {
+
+// error_sums.hpp's order, written out row by row: four partial sums, row r in lane r mod 4 except the rows
+// beyond the last multiple of 4 (lane 0, in order), then (s0 + s1) + (s2 + s3); the maximum likewise.
+// Blocks hold a multiple of 4 rows, so a block's lanes are the rows' lanes.
+template <class T>
+double error_in_documented_order(const Dataset& dataset, ErrorMeasure measure) {
+  const std::size_t rows = static_cast<std::size_t>(dataset.target.size());
+  double squares[4] = {0.0, 0.0, 0.0, 0.0};
+  double max_abs[4] = {0.0, 0.0, 0.0, 0.0};
+  const double weight_sum = dataset.weights.sum();  // Eigen's reduction, as the interpreter's
+  for (std::size_t r = 0; r < rows; ++r) {
+    const auto i = static_cast<Eigen::Index>(r);
+    const std::size_t lane = r < rows - rows % 4 ? r % 4 : 0;
+    const double target = dataset.target[i];
+    const double scale = measure == ErrorMeasure::relative ? 1.0 / std::max(std::abs(target), 1e-6) : 1.0;
+    const double residual = static_cast<double>(static_cast<T>(dataset.inputs(i, 0))) - target;
+    const double scaled = residual * scale;
+    squares[lane] += dataset.weights[i] * scaled * scaled;
+    max_abs[lane] = std::max(max_abs[lane], std::abs(residual));
+  }
+  if (measure == ErrorMeasure::max_abs) return std::max(std::max(max_abs[0], max_abs[1]), std::max(max_abs[2], max_abs[3]));
+  return std::sqrt(((squares[0] + squares[1]) + (squares[2] + squares[3])) / weight_sum);
+}
+
+}  // namespace
+
+// The error's sums run as vector code over four lanes; their order is part of the determinism contract (a
+// sum in another order, or over eight lanes, rounds differently), so every error is that order's, bitwise.
+TEST_CASE("The error sums rows in the documented order, bitwise, for every measure and type", "[gp]") {
+  ProgramBuilder builder;
+  const Program identity = builder.finish(input_argument(0));
+  for (std::uint64_t seed = 1; seed <= 8; ++seed) {
+    CAPTURE(seed);
+    // Weights over four orders of magnitude, so that summing in another order rounds differently.
+    Dataset dataset = gp_test::sampled_dataset(mixed_rows + 3, 1, -3.0, 3.0, [](auto x) { return std::sin(3.0 * x[0]); }, seed);
+    pbrfit::RandomStream random(seed, 1);
+    dataset.weights = Eigen::ArrayXd(dataset.target.size());
+    for (Eigen::Index i = 0; i < dataset.weights.size(); ++i) dataset.weights[i] = std::exp(10.0 * random.uniform());
+    for (const ErrorMeasure measure : {ErrorMeasure::rmse, ErrorMeasure::max_abs, ErrorMeasure::relative}) {
+      CAPTURE(name(measure));
+      CHECK(BatchInterpreter<float>(dataset, {measure}).error(identity) == error_in_documented_order<float>(dataset, measure));
+      CHECK(BatchInterpreter<double>(dataset, {measure}).error(identity) == error_in_documented_order<double>(dataset, measure));
+    }
+  }
+}
+
 TEST_CASE("The cost counts live operators from the table and the piecewise ones", "[gp]") {
   ProgramBuilder builder;
   const Argument x = input_argument(0);
