@@ -22,24 +22,20 @@
 
 #include "pbrfit/gp/opcode.hpp"
 
-#if PBRFIT_KERNEL_LIBMVEC == 512
-#define PBRFIT_LIBMVEC_FLOATS(fn) _ZGVeN16v_##fn##f
-#define PBRFIT_LIBMVEC_DOUBLES(fn) _ZGVeN8v_##fn
-#elif PBRFIT_KERNEL_LIBMVEC == 256
-#define PBRFIT_LIBMVEC_FLOATS(fn) _ZGVdN8v_##fn##f
-#define PBRFIT_LIBMVEC_DOUBLES(fn) _ZGVdN4v_##fn
-#else
-#error "PBRFIT_KERNEL_LIBMVEC must be 256 or 512"
-#endif
-
 namespace pbrfit::gp::detail::PBRFIT_KERNEL_ISA {
 
 #if PBRFIT_KERNEL_LIBMVEC == 512
+#define PBRFIT_LIBMVEC_FLOATS(fn) _ZGVeN16v_##fn##f
+#define PBRFIT_LIBMVEC_DOUBLES(fn) _ZGVeN8v_##fn
 using LibmvecFloats = __m512;
 using LibmvecDoubles = __m512d;
-#else
+#elif PBRFIT_KERNEL_LIBMVEC == 256
+#define PBRFIT_LIBMVEC_FLOATS(fn) _ZGVdN8v_##fn##f
+#define PBRFIT_LIBMVEC_DOUBLES(fn) _ZGVdN4v_##fn
 using LibmvecFloats = __m256;
 using LibmvecDoubles = __m256d;
+#else
+#error "PBRFIT_KERNEL_LIBMVEC must be 256 or 512"
 #endif
 
 #define PBRFIT_DECLARE_LIBMVEC(fn)                                     \

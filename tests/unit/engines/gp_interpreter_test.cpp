@@ -390,7 +390,7 @@ double error_in_documented_order(const Dataset& dataset, ErrorMeasure measure) {
     const auto i = static_cast<Eigen::Index>(r);
     const std::size_t lane = r < rows - rows % 4 ? r % 4 : 0;
     const double target = dataset.target[i];
-    const double scale = measure == ErrorMeasure::relative ? 1.0 / std::max(std::abs(target), 1e-6) : 1.0;
+    const double scale = measure == ErrorMeasure::relative ? 1.0 / std::max(std::abs(target), ErrorOptions{}.relative_floor) : 1.0;
     const double residual = static_cast<double>(static_cast<T>(dataset.inputs(i, 0))) - target;
     const double scaled = residual * scale;
     squares[lane] += dataset.weights[i] * scaled * scaled;
